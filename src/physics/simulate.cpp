@@ -1,0 +1,307 @@
+// The shot pipeline (physics-model.md): find the next event → advance the balls it involves to
+// it → resolve it → record it → re-predict only what it changed. Between events every ball
+// follows its closed form, so nothing is stepped and nothing tunnels.
+#include "physics/simulate.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cassert>
+#include <limits>
+#include <tuple>
+
+#include "physics/collide.hpp"
+#include "physics/cue_strike.hpp"
+#include "physics/detect.hpp"
+#include "physics/energy.hpp"
+#include "physics/motion.hpp"
+
+namespace physics {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr std::size_t kMaxBalls = 16;
+
+/// What a predicted event is about. The order is the tie order of simultaneous events.
+enum class Kind : int { ball_ball = 0, line = 1, nose = 2, drop = 3, transition = 4 };
+
+struct Candidate {
+    double time = kInf;
+    Kind kind = Kind::transition;
+    int a = -1;       ///< ball index
+    int b = -1;       ///< second ball index, or geometry index
+    bool pushing = false;
+
+    /// Total order: time, then kind, then ball and geometry indices (determinism).
+    bool before(const Candidate& o) const {
+        return std::tie(time, kind, a, b) < std::tie(o.time, o.kind, o.a, o.b);
+    }
+};
+
+class Simulation {
+public:
+    Simulation(const Table& table, const Params& params, std::span<const BallState> balls,
+               const SimOptions& options)
+        : table_(table), params_(params), options_(options), n_(balls.size()) {
+        assert(n_ <= kMaxBalls && "at most 16 balls (ids 0-15)");
+        segments_.resize(n_);
+        for (std::size_t i = 0; i < n_; ++i) {
+            BallState s = balls[i];
+            if (s.motion != Motion::pocketed) s = motion::settle(params_, s);
+            segments_[i].push_back({0.0, s});
+            live_[i] = {motion::acceleration(params_, s), motion::duration(params_, s)};
+        }
+        for (std::size_t i = 0; i < n_; ++i) predict_for(i);
+    }
+
+    void strike(const Stroke& stroke) {
+        const std::size_t cue = index_of(0);
+        const StrikeResult r = physics::strike(params_, stroke);
+        BallState s = current(cue).start;
+        s.vel = r.vel;
+        s.spin = r.spin;
+        start_segment(cue, motion::settle(params_, s));
+        Event e = make_event(r.miscue ? EventType::miscue : EventType::strike, {cue});
+        events_.push_back(e);
+        predict_for(cue);
+    }
+
+    /// One turn of the pipeline. False once every ball is at rest, or at the event cap.
+    bool step() {
+        const Candidate next = earliest();
+        if (std::isinf(next.time)) return false;
+        if (events_.size() >= options_.max_events) {
+            truncated_ = true;
+            return false;
+        }
+        now_ = next.time;
+        resolve(next);
+        return true;
+    }
+
+    Shot finish() && {
+        return Shot(params_, std::move(events_), std::move(segments_), truncated_);
+    }
+
+private:
+    std::size_t index_of(int id) const {
+        for (std::size_t i = 0; i < n_; ++i)
+            if (segments_[i].front().start.id == id) return i;
+        assert(false && "the struck ball 0 must be in the layout");
+        return 0;
+    }
+
+    const Segment& current(std::size_t i) const { return segments_[i].back(); }
+    double segment_end(std::size_t i) const { return live_[i].end; }
+    /// Kinematics of ball i now, from its current segment's closed form.
+    motion::Kinematics kinematics(std::size_t i) const {
+        const Segment& s = current(i);
+        const double dt = now_ - s.t0;
+        const Vec2 a = live_[i].acc;
+        return {s.start.pos + dt * s.start.vel + (0.5 * dt * dt) * a, s.start.vel + dt * a, a};
+    }
+    BallState state_now(std::size_t i) const {
+        const Segment& s = current(i);
+        return motion::evolve(params_, s.start, now_ - s.t0);
+    }
+    detect::Mover mover(std::size_t i, double until) const {
+        return detect::make_mover(kinematics(i), until - now_,
+                                  current(i).start.motion == Motion::rolling);
+    }
+    bool active(std::size_t i) const { return current(i).start.motion != Motion::pocketed; }
+
+    void start_segment(std::size_t i, const BallState& s) {
+        segments_[i].push_back({now_, s});
+        live_[i] = {motion::acceleration(params_, s), now_ + motion::duration(params_, s)};
+    }
+
+    Event make_event(EventType type, std::initializer_list<std::size_t> balls) const {
+        Event e;
+        e.time = now_;
+        e.type = type;
+        e.ball_count = static_cast<std::uint8_t>(balls.size());
+        std::size_t k = 0;
+        for (std::size_t i : balls) {
+            const BallState& s = current(i).start;
+            e.balls[k++] = {s.id, s.pos, s.vel, s.spin};
+        }
+        return e;
+    }
+
+    // ---- detect ----
+
+    Candidate earliest() const {
+        Candidate best;
+        for (std::size_t i = 0; i < n_; ++i) {
+            if (own_[i].before(best)) best = own_[i];
+            for (std::size_t j = i + 1; j < n_; ++j)
+                if (pair_[i][j].before(best)) best = pair_[i][j];
+        }
+        return best;
+    }
+
+    /// Re-predicts everything that involves ball i: its own next event, and its pairs.
+    void predict_for(std::size_t i) {
+        const int ii = static_cast<int>(i);
+        own_[i] = Candidate{};
+        for (std::size_t j = 0; j < n_; ++j)
+            if (j != i) pair(i, j) = Candidate{};
+        if (!active(i)) return;
+        const double R = params_.ball_radius;
+        // Own events: the transition, then cushions, noses and drops, each searched only up to
+        // the earliest found so far (which also tightens the reach bound).
+        Candidate own{segment_end(i), Kind::transition, ii, -1, false};
+        detect::Mover m = mover(i, own.time);
+        auto consider = [&](double tau, Kind kind, int g, bool pushing) {
+            Candidate c{now_ + tau, kind, ii, g, pushing};
+            if (std::isinf(tau) || !c.before(own)) return;
+            own = c;
+            m = m.within(tau);
+        };
+        for (std::size_t g = 0; g < table_.lines.size(); ++g) {
+            const detect::Prediction p = detect::line(m, table_.lines[g], R);
+            consider(p.tau, Kind::line, static_cast<int>(g), p.pushing);
+        }
+        for (std::size_t g = 0; g < table_.noses.size(); ++g) {
+            const detect::Prediction p = detect::nose(m, table_.noses[g], R);
+            consider(p.tau, Kind::nose, static_cast<int>(g), p.pushing);
+        }
+        for (std::size_t g = 0; g < table_.pockets.size(); ++g) {
+            const Pocket& pk = table_.pockets[g];
+            const double lateral = 0.5 * norm(pk.mouth_b - pk.mouth_a) + table_.spec.jaw_depth;
+            consider(detect::drop(m, pk, lateral), Kind::drop, static_cast<int>(g), false);
+        }
+        own_[i] = own;
+        // Pairs: a contact after either ball's own next event need not be searched, since that
+        // event re-predicts every pair of the ball.
+        for (std::size_t j = 0; j < n_; ++j) {
+            if (j == i || !active(j)) continue;
+            const double until = std::min(own_[i].time, own_[j].time);
+            if (!(until >= now_)) continue;
+            const detect::Prediction p =
+                detect::ball_ball(mover(i, until), mover(j, until), R, until - now_);
+            if (std::isinf(p.tau)) continue;
+            const auto [lo, hi] = std::minmax(i, j);
+            pair(i, j) = Candidate{now_ + p.tau, Kind::ball_ball, static_cast<int>(lo),
+                                   static_cast<int>(hi), p.pushing};
+        }
+    }
+
+    Candidate& pair(std::size_t i, std::size_t j) {
+        return i < j ? pair_[i][j] : pair_[j][i];
+    }
+
+    // ---- resolve ----
+
+    void resolve(const Candidate& c) {
+        const std::size_t a = static_cast<std::size_t>(c.a);
+        switch (c.kind) {
+            case Kind::transition: {
+                const Motion from = current(a).start.motion;
+                start_segment(a, motion::transition(params_, current(a).start));
+                Event e = make_event(EventType::transition, {a});
+                e.from = from;
+                e.to = current(a).start.motion;
+                record(e, {a});
+                break;
+            }
+            case Kind::ball_ball: {
+                const std::size_t b = static_cast<std::size_t>(c.b);
+                BallState sa = state_now(a), sb = state_now(b);
+                const double speed = collide::ball_ball(params_, options_.models.ball_ball, sa, sb,
+                                                        c.pushing);
+                start_segment(a, motion::settle(params_, sa));
+                start_segment(b, motion::settle(params_, sb));
+                Event e = make_event(EventType::ball_ball, {a, b});
+                e.speed = speed;
+                record(e, {a, b});
+                break;
+            }
+            case Kind::line:
+            case Kind::nose: {
+                BallState s = state_now(a);
+                Vec2 toward;
+                Event proto;
+                if (c.kind == Kind::line) {
+                    const CushionLine& l = table_.lines[static_cast<std::size_t>(c.b)];
+                    toward = -1.0 * l.normal;
+                    proto.rail = l.rail;
+                    proto.pocket = l.pocket;
+                } else {
+                    const JawNose& n = table_.noses[static_cast<std::size_t>(c.b)];
+                    toward = (1.0 / norm(n.centre - s.pos)) * (n.centre - s.pos);
+                    proto.pocket = n.pocket;
+                }
+                const double speed = collide::cushion(params_, options_.models.cushion,
+                                                      table_.spec.cushion_height, toward, s,
+                                                      c.pushing);
+                start_segment(a, motion::settle(params_, s));
+                Event e = make_event(EventType::cushion, {a});
+                e.speed = speed;
+                e.rail = proto.rail;
+                e.pocket = proto.pocket;
+                record(e, {a});
+                break;
+            }
+            case Kind::drop: {
+                BallState s = state_now(a);
+                s.vel = {};
+                s.spin = {};
+                s.motion = Motion::pocketed;
+                s.pocket = table_.pockets[static_cast<std::size_t>(c.b)].id;
+                start_segment(a, s);
+                Event e = make_event(EventType::pocket, {a});
+                e.pocket = s.pocket;
+                record(e, {a});
+                break;
+            }
+        }
+    }
+
+    void record(const Event& e, std::initializer_list<std::size_t> changed) {
+#ifndef NDEBUG
+        // Energy audit: no event may add energy (the segments before it end at now_).
+        double before = 0, after = 0;
+        for (std::size_t i : changed) {
+            const auto& segs = segments_[i];
+            const Segment& prev = segs[segs.size() - 2];
+            before += kinetic_energy(params_, motion::evolve(params_, prev.start, now_ - prev.t0));
+            after += kinetic_energy(params_, current(i).start);
+        }
+        assert(after <= before * (1.0 + 1e-9) + 1e-12 &&
+               "an event added kinetic energy: check the collision model");
+#endif
+        events_.push_back(e);
+        for (std::size_t i : changed) predict_for(i);
+    }
+
+    const Table& table_;
+    const Params& params_;
+    const SimOptions& options_;
+    std::size_t n_;
+    double now_ = 0.0;
+    bool truncated_ = false;
+    std::vector<std::vector<Segment>> segments_;
+    std::vector<Event> events_;
+    /// Per ball: the current segment's constant acceleration and its end (unit: m/s², s).
+    struct Live {
+        Vec2 acc;
+        double end = kInf;
+    };
+    std::array<Live, kMaxBalls> live_{};
+    std::array<Candidate, kMaxBalls> own_{};
+    std::array<std::array<Candidate, kMaxBalls>, kMaxBalls> pair_{};
+};
+
+}  // namespace
+
+Shot simulate(const Table& table, const Params& params, std::span<const BallState> balls,
+              const Stroke* stroke, const SimOptions& options) {
+    Simulation sim(table, params, balls, options);
+    if (stroke) sim.strike(*stroke);
+    while (sim.step()) {
+    }
+    return std::move(sim).finish();
+}
+
+}  // namespace physics
