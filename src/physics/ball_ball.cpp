@@ -19,10 +19,21 @@ double ball_ball_friction(const Params& p, double slip_speed) {
 
 namespace {
 
-/// Scales both balls' motion so the pair's energy is not above `budget` (pushing contacts).
+/// Keeps the pair's energy at or below `budget` after a pushing contact, taking the excess
+/// from the spins first, which leaves the momentum exact; from the velocities only if the spins
+/// cannot pay.
 void cap_energy(const Params& p, BallState& a, BallState& b, double budget) {
     const double e = kinetic_energy(p, a) + kinetic_energy(p, b);
     if (e <= budget || e <= 0) return;
+    const double inertia = 0.4 * p.ball_mass * p.ball_radius * p.ball_radius;
+    const double spin_e = 0.5 * inertia * (norm2(a.spin) + norm2(b.spin));
+    const double excess = (e - budget) * (1.0 + 1e-12);
+    if (spin_e > excess) {
+        const double k = std::sqrt((spin_e - excess) / spin_e);
+        a.spin = k * a.spin;
+        b.spin = k * b.spin;
+        return;
+    }
     const double k = std::sqrt(budget / e) * (1.0 - 1e-15);
     for (BallState* s : {&a, &b}) {
         s->vel = k * s->vel;
@@ -32,9 +43,14 @@ void cap_energy(const Params& p, BallState& a, BallState& b, double budget) {
 
 }  // namespace
 
-double rebound_speed(double approach, double push_accel, double restitution, bool pushing) {
-    if (pushing) return std::max(kSeparationSpeed, 0.5 * push_accel * kContactTime);
-    const bool resting = 2.0 * restitution * approach < push_accel * kContactTime;
+double push_speed(const Params& p, const BallState& s, Vec2 toward) {
+    const double accel = dot(motion::acceleration(p, s), toward);
+    return accel > 0 ? accel * std::min(kContactTime, motion::duration(p, s)) : 0.0;
+}
+
+double rebound_speed(double approach, double push, double restitution, bool pushing) {
+    if (pushing) return std::max(kSeparationSpeed, 0.5 * push);
+    const bool resting = 2.0 * restitution * approach < push;
     if (approach < kInelasticSpeed || resting) return 0.0;
     return restitution * approach;
 }
@@ -44,13 +60,16 @@ double ball_ball(const Params& p, BallBallModel model, BallState& a, BallState& 
     const double budget = kinetic_energy(p, a) + kinetic_energy(p, b);
     const Vec2 n = (1.0 / norm(b.pos - a.pos)) * (b.pos - a.pos);  // from a to b
     const double approach = std::max(0.0, dot(a.vel - b.vel, n));
-    const double push = std::max(
-        0.0, dot(motion::acceleration(p, a) - motion::acceleration(p, b), n));
+    const double push = push_speed(p, a, n) + push_speed(p, b, -n);
     // Normal impulse on b (and −J_n·n on a); equal masses, reduced mass m/2.
     const double jn = 0.5 * m * (approach + rebound_speed(approach, push, p.e_ball, pushing));
     a.vel = a.vel - (jn / m) * n;
     b.vel = b.vel + (jn / m) * n;
-    if (model == BallBallModel::frictional && jn > 0) {
+    // Contacts in the inelastic regime (slower than kInelasticSpeed, or pushing) are also
+    // frictionless: their friction impulse is negligible, and it would keep turning spin into
+    // approach between wedged balls.
+    const bool slow = pushing || approach < kInelasticSpeed;
+    if (model == BallBallModel::frictional && jn > 0 && !slow) {
         const Vec3 n3 = lift(n);
         // Slip of a's contact point (at +R·n) relative to b's (at −R·n).
         const Vec3 s = lift(a.vel - b.vel) + R * cross(a.spin + b.spin, n3);
@@ -69,6 +88,20 @@ double ball_ball(const Params& p, BallBallModel model, BallState& a, BallState& 
         }
     }
     if (pushing) cap_energy(p, a, b, budget);
+    // Leave the contact settled (tiny slips resolved, see motion::settle) and not approaching:
+    // settling can turn a little of the slip back into approach, which a further inelastic
+    // normal impulse removes; the correction shrinks by 2/7 each round.
+    const double snap = slow ? motion::kSnapSlip : motion::kRollSlip;
+    a = motion::settle(p, a, snap);
+    b = motion::settle(p, b, snap);
+    for (int round = 0; round < 32; ++round) {
+        const double again = dot(a.vel - b.vel, n);
+        if (again <= 0) break;
+        a.vel = a.vel - (0.5 * again) * n;
+        b.vel = b.vel + (0.5 * again) * n;
+        a = motion::settle(p, a, snap);
+        b = motion::settle(p, b, snap);
+    }
     return approach;
 }
 

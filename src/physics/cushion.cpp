@@ -33,7 +33,7 @@ double han2005(const Params& p, double h, Vec2 n, BallState& b, bool pushing) {
     const double c = vn * cos_t;
     // Impulse magnitude along −normal. The one that leaves the ball's horizontal normal speed
     // at −w is m·(v_n + w)/cos θ; w = 0 just stops the approach.
-    const double push = std::max(0.0, dot(motion::acceleration(p, b), n));
+    const double push = push_speed(p, b, n);
     const double w = rebound_speed(vn, push, p.e_cushion, pushing);
     double pn = m * (vn + w) / cos_t;
     if (w > 0 && !pushing) pn = std::max((1.0 + p.e_cushion) * m * c, m * vn / cos_t);
@@ -41,7 +41,7 @@ double han2005(const Params& p, double h, Vec2 n, BallState& b, bool pushing) {
     const Vec3 slip = u - dot(u, normal) * normal;
     const double s = norm(slip);
     Vec3 impulse = (-pn) * normal;
-    if (s > 0) {
+    if (s > 0 && w > 0 && !pushing) {  // slow contacts are inelastic and frictionless
         const double pt = std::min(p.mu_cushion * pn, s / (3.5 / m));
         impulse = impulse - (pt / s) * slip;
     }
@@ -52,7 +52,7 @@ double han2005(const Params& p, double h, Vec2 n, BallState& b, bool pushing) {
 
 double simple(const Params& p, Vec2 n, BallState& b, bool pushing) {
     const double vn = std::max(0.0, dot(b.vel, n));
-    const double push = std::max(0.0, dot(motion::acceleration(p, b), n));
+    const double push = push_speed(p, b, n);
     b.vel = b.vel - (vn + rebound_speed(vn, push, p.e_cushion, pushing)) * n;
     return vn;
 }
@@ -71,6 +71,15 @@ double cushion(const Params& p, CushionModel model, double nose_height, Vec2 tow
             b.vel = k * b.vel;
             b.spin = k * b.spin;
         }
+    }
+    // Leave the contact settled and not approaching (as for ball–ball contacts).
+    const double snap = (pushing || vn < kInelasticSpeed) ? motion::kSnapSlip : motion::kRollSlip;
+    b = motion::settle(p, b, snap);
+    for (int round = 0; round < 32; ++round) {
+        const double again = dot(b.vel, toward);
+        if (again <= 0) break;
+        b.vel = b.vel - again * toward;
+        b = motion::settle(p, b, snap);
     }
     return vn;
 }

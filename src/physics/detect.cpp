@@ -10,8 +10,8 @@ namespace physics::detect {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-/// ½·d²/dt² of a squared distance below this is an acceleration into contact (unit: m²/s²).
-constexpr double kPushCurvature = -1e-12;
+/// Normal accelerations below this are into contact (unit: m/s²).
+constexpr double kPushAccel = -1e-12;
 
 Vec2 position(const motion::Kinematics& k, double t) { return k.p + t * k.v + (0.5 * t * t) * k.a; }
 
@@ -23,7 +23,11 @@ Prediction circle_contact(Vec2 dp, Vec2 dv, Vec2 da, double D, double reach, dou
     if (dist - D <= kTouchGap && dist > 0) {
         const double rate = dot(dp, dv) / dist;  // d|Δp|/dt, negative when approaching
         if (rate < -kApproachEps) return {0.0, false};
-        if (rate <= kApproachEps && norm2(dv) + dot(dp, da) < kPushCurvature) return {0.0, true};
+        // Pushing: no normal speed, and the gap closes within the horizon under the contact's
+        // acceleration (d²|Δp|/dt² ≈ curvature / |Δp|).
+        const double accel = (norm2(dv) + dot(dp, da)) / dist;
+        if (rate <= kApproachEps && accel < kPushAccel && rate < -0.5 * accel * horizon)
+            return {0.0, true};
     }
     const roots::Poly4 c{dot(dp, dp) - D * D, 2.0 * dot(dp, dv), dot(dv, dv) + dot(dp, da),
                          dot(dv, da), 0.25 * dot(da, da)};
@@ -75,7 +79,7 @@ Prediction line(const Mover& m, const CushionLine& l, double R) {
     };
     if (s0 <= kTouchGap && s0 >= -1e-6 && within(0.0)) {
         if (s1 < -kApproachEps) return {0.0, false};
-        if (s1 <= kApproachEps && s2 < 0.0) return {0.0, true};
+        if (s1 <= kApproachEps && s2 < kPushAccel && s1 < -0.5 * s2 * m.horizon) return {0.0, true};
     }
     const double t = roots::first_downward_crossing({s0, s1, 0.5 * s2, 0.0, 0.0}, 0.0, m.horizon);
     if (std::isinf(t) || !within(t)) return {};

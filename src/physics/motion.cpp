@@ -94,10 +94,10 @@ BallState transition(const Params& p, const BallState& s) {
     return settle(p, end);
 }
 
-BallState settle(const Params& p, BallState s) {
+BallState settle(const Params& p, BallState s, double snap_slip) {
     if (s.motion == Motion::pocketed) return s;
     const double R = p.ball_radius;
-    if (std::fabs(s.spin.z) < kRestSpeed) s.spin.z = 0.0;
+    if (std::fabs(s.spin.z) < 1e-9) s.spin.z = 0.0;
     const bool still = norm(s.vel) < kRestSpeed && norm(flat(s.spin)) * R < kRestSpeed;
     if (still) {
         s.vel = {};
@@ -105,7 +105,11 @@ BallState settle(const Params& p, BallState s) {
         s.motion = s.spin.z != 0.0 ? Motion::spinning : Motion::stationary;
         return s;
     }
-    if (norm(cloth_slip(p, s.vel, s.spin)) < kRollSlip) {
+    const Vec2 u = cloth_slip(p, s.vel, s.spin);
+    const double slip = norm(u);
+    if (slip < std::max(snap_slip, kRollSlip)) {
+        // The slide's end state: v falls by μg·t along û while u falls by 7/2·μg·t.
+        if (slip >= kRollSlip) s.vel = s.vel - (2.0 / 7.0) * u;
         Vec2 w = (1.0 / R) * perp(s.vel);
         s.spin.x = w.x;
         s.spin.y = w.y;

@@ -210,8 +210,17 @@ private:
                 BallState sa = state_now(a), sb = state_now(b);
                 const double speed = collide::ball_ball(params_, options_.models.ball_ball, sa, sb,
                                                         c.pushing);
-                start_segment(a, motion::settle(params_, sa));
-                start_segment(b, motion::settle(params_, sb));
+                if (speed < collide::kInelasticSpeed && jammed(a, b)) {
+                    // Resolving a slow ball wedged between others one contact at a time
+                    // converges too slowly (nearly opposite contacts); a jammed ball stops.
+                    for (BallState* st : {&sa, &sb}) {
+                        st->vel = {};
+                        st->spin.x = st->spin.y = 0.0;
+                        *st = motion::settle(params_, *st);
+                    }
+                }
+                start_segment(a, sa);  // collide leaves the balls settled
+                start_segment(b, sb);
                 Event e = make_event(EventType::ball_ball, {a, b});
                 e.speed = speed;
                 record(e, {a, b});
@@ -235,7 +244,7 @@ private:
                 const double speed = collide::cushion(params_, options_.models.cushion,
                                                       table_.spec.cushion_height, toward, s,
                                                       c.pushing);
-                start_segment(a, motion::settle(params_, s));
+                start_segment(a, s);
                 Event e = make_event(EventType::cushion, {a});
                 e.speed = speed;
                 e.rail = proto.rail;
@@ -256,6 +265,16 @@ private:
                 break;
             }
         }
+    }
+
+    /// Counts slow contacts of each ball at the current instant; true once either ball of a
+    /// pair has had more than kJamContacts of them.
+    bool jammed(std::size_t a, std::size_t b) {
+        if (now_ != jam_time_) {
+            jam_time_ = now_;
+            jam_count_.fill(0);
+        }
+        return ++jam_count_[a] > kJamContacts || ++jam_count_[b] > kJamContacts;
     }
 
     void record(const Event& e, std::initializer_list<std::size_t> changed) {
@@ -290,6 +309,9 @@ private:
     };
     std::array<Live, kMaxBalls> live_{};
     std::array<Candidate, kMaxBalls> own_{};
+    static constexpr int kJamContacts = 16;
+    double jam_time_ = -1.0;
+    std::array<int, kMaxBalls> jam_count_{};
     std::array<std::array<Candidate, kMaxBalls>, kMaxBalls> pair_{};
 };
 

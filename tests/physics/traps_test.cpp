@@ -1,0 +1,145 @@
+// The traps of event-based engines (physics-model.md): touching balls, simultaneous events,
+// chatter, motion parallel to a rail.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "physics/energy.hpp"
+#include "physics/rack.hpp"
+#include "physics/simulate.hpp"
+
+namespace physics {
+namespace {
+
+BallState at(int id, double x, double y) {
+    BallState b;
+    b.id = id;
+    b.pos = {x, y};
+    return b;
+}
+
+const Params kParams;
+const double R = kParams.ball_radius;
+
+TEST(Traps, FrozenRowTransmitsTheHit) {
+    // Newton's cradle: a row of frozen balls; the cue ball hits the first, the last one leaves.
+    // With e = 1 and no friction the momentum passes down the row and the near balls stay
+    // (but for the follow of the little spin the cue ball gains on its 0.1 mm way).
+    Params p = kParams;
+    p.e_ball = 1.0;
+    const Table t = build_table(*table_preset("unbounded"));
+    std::vector<BallState> balls{at(0, 0.5 - 2 * R - 1e-4, 0.0)};
+    balls[0].vel = {2.0, 0.0};
+    for (int k = 1; k <= 4; ++k) balls.push_back(at(k, 0.5 + (k - 1) * 2 * R, 0.0));
+    SimOptions o;
+    o.models.ball_ball = BallBallModel::frictionless;
+    const Shot shot = simulate(t, p, balls, nullptr, o);
+    // The cascade happens at one instant: just after it, only the far ball moves.
+    double first_contact = -1;
+    for (const Event& e : shot.events())
+        if (e.type == EventType::ball_ball && first_contact < 0) first_contact = e.time;
+    ASSERT_GT(first_contact, 0);
+    const auto after = shot.states_at(first_contact);
+    const double v0 = norm(shot.state_at(0, first_contact - 1e-9).vel);
+    for (int k = 0; k < 4; ++k) EXPECT_LT(norm(after[static_cast<std::size_t>(k)].vel), 1e-4 * v0);
+    EXPECT_NEAR(norm(after[4].vel), v0, 1e-4 * v0) << "the far ball leaves with all the speed";
+    EXPECT_GT(shot.final_states().back().pos.x - balls.back().pos.x, 0.3);
+}
+
+TEST(Traps, RackedBallsAreFrozenAndTheBreakSpreadsThem) {
+    const Table t = build_table(*table_preset("9ft"));
+    const auto balls = rack(RackType::eight_ball, t, kParams, 11);
+    int touching = 0;
+    for (std::size_t i = 1; i < balls.size(); ++i)
+        for (std::size_t j = 1; j < i; ++j) {
+            const double gap = norm(balls[i].pos - balls[j].pos) - 2 * R;
+            EXPECT_GT(gap, -1e-12);
+            touching += gap < 1e-12;
+        }
+    EXPECT_EQ(touching, 30) << "a tight 15-ball triangle has 30 touching pairs";
+    Stroke s;
+    s.speed = 7.0;
+    const Shot shot = simulate(t, kParams, balls, &s);
+    const auto fin = shot.final_states();
+    const double back_row = t.foot_spot().x + 4 * std::sqrt(3.0) * R;
+    int back = 0;
+    for (std::size_t i = 1; i < fin.size(); ++i) {
+        if (std::fabs(balls[i].pos.x - back_row) > 1e-9) continue;
+        ++back;
+        EXPECT_TRUE(fin[i].motion == Motion::pocketed || norm(fin[i].pos - balls[i].pos) > 0.1)
+            << "ball " << fin[i].id << " in the back row: the break must reach it";
+    }
+    EXPECT_EQ(back, 5);
+}
+
+TEST(Traps, BallHittingTwoBallsAtOnce) {
+    // The cue ball arrives exactly between two touching balls: both contacts at the same time,
+    // resolved in a fixed order, none lost; symmetric outcome up to that order.
+    const Table t = build_table(*table_preset("unbounded"));
+    std::vector<BallState> balls{at(0, 0.0, 0.0), at(1, 0.6, R), at(2, 0.6, -R)};
+    Stroke s;
+    s.speed = 2.0;
+    const Shot shot = simulate(t, kParams, balls, &s);
+    int hits1 = 0, hits2 = 0;
+    for (const Event& e : shot.events())
+        if (e.type == EventType::ball_ball && e.involves(0)) {
+            hits1 += e.involves(1);
+            hits2 += e.involves(2);
+        }
+    EXPECT_GE(hits1, 1);
+    EXPECT_GE(hits2, 1);
+    // Both contacts at the same instant (ball 1 first: the tie order), none lost.
+    ASSERT_GE(shot.events().size(), 3u);
+    EXPECT_EQ(shot.events()[1].type, EventType::ball_ball);
+    EXPECT_EQ(shot.events()[2].type, EventType::ball_ball);
+    EXPECT_EQ(shot.events()[1].time, shot.events()[2].time);
+    EXPECT_TRUE(shot.events()[1].involves(1));
+    EXPECT_TRUE(shot.events()[2].involves(2));
+    const auto fin = shot.final_states();
+    EXPECT_GT(fin[1].pos.y, R);
+    EXPECT_LT(fin[2].pos.y, -R);
+}
+
+TEST(Traps, RollingAlongARailTouchingItMakesNoEvents) {
+    const Table t = build_table(*table_preset("9ft"));
+    // Frozen to the south rail, rolling past the side pocket's mouth, stopping before the far
+    // corner: the side pocket's noses are tangent to the rail line, so it passes them.
+    BallState b = at(0, 0.5, R);
+    b.vel = {0.6, 0.0};
+    b.spin = {0.0, 0.6 / R, 0.0};  // rolling
+    const std::vector<BallState> balls{b};
+    const Shot shot = simulate(t, kParams, balls, nullptr);
+    for (const Event& e : shot.events()) EXPECT_NE(e.type, EventType::cushion);
+    EXPECT_NEAR(shot.final_states()[0].pos.y, R, 1e-12);
+    EXPECT_GT(shot.final_states()[0].pos.x, t.length() / 2 + 0.1);
+}
+
+TEST(Traps, SpinDrivingABallIntoAFrozenBallEndsInFewEvents) {
+    // Chatter: a ball with heavy topspin frozen behind another keeps pushing it.
+    const Table t = build_table(*table_preset("unbounded"));
+    BallState a = at(0, 0.0, 0.0);
+    a.spin = {0.0, 60.0, 0.0};  // pure topspin, no speed: it drives forward into ball 1
+    const std::vector<BallState> balls{a, at(1, 2 * R, 0.0)};
+    const Shot shot = simulate(t, kParams, balls, nullptr);
+    EXPECT_FALSE(shot.truncated());
+    EXPECT_LT(shot.events().size(), 200u);
+    const auto fin = shot.final_states();
+    EXPECT_GT(fin[1].pos.x, 2 * R + 0.01) << "the pushed ball moves on";
+    EXPECT_GE(norm(fin[1].pos - fin[0].pos), 2 * R - 1e-9);
+}
+
+TEST(Traps, SlowBallNudgingARailComesToRest) {
+    // A slow ball sliding into a rail with spin that drives it back in: no chatter loop.
+    const Table t = build_table(*table_preset("9ft"));
+    BallState b = at(0, 1.0, 0.2);
+    b.vel = {0.0, -0.01};
+    b.spin = {40.0, 0.0, 5.0};  // ω_x > 0 drives the ball toward −y
+    const std::vector<BallState> balls{b};
+    const Shot shot = simulate(t, kParams, balls, nullptr);
+    EXPECT_FALSE(shot.truncated());
+    EXPECT_LT(shot.events().size(), 200u);
+    EXPECT_GE(shot.final_states()[0].pos.y, R - 1e-9);
+}
+
+}  // namespace
+}  // namespace physics
