@@ -2,11 +2,22 @@
 // returns the output document; bad input throws cli::BadInput.
 #pragma once
 
+#include <cstdint>
+
 #include <nlohmann/json.hpp>
 
 namespace cli {
 
-nlohmann::json simulate_command(const nlohmann::json& input);
-nlohmann::json judge_command(const nlohmann::json& input);
+/// `simulate`: a table, parameters, balls (or a rack) and an optional strike → the shot's
+/// events, final state, samples, rest time.
+nlohmann::ordered_json simulate_command(const nlohmann::json& input);
+
+/// `judge`: a game state and a shot's events → the verdict and the next state.
+nlohmann::ordered_json judge_command(const nlohmann::json& input);
+
+/// `bench --runs N`: simulates each standard scene `runs` times and reports timings.
+inline constexpr std::int64_t default_bench_runs = 2000;
+inline constexpr std::int64_t max_bench_runs = 1'000'000;
+nlohmann::ordered_json bench_command(std::int64_t runs = default_bench_runs);
 
 }  // namespace cli

@@ -28,7 +28,8 @@ private:
 /// A JSON value and its path (e.g. "balls[3].pos").
 class JsonIn {
 public:
-    JsonIn(const nlohmann::json& value, std::string path) : value_(&value), path_(std::move(path)) {}
+    JsonIn(const nlohmann::json& value, std::string path)
+        : value_(&value), path_(std::move(path)) {}
 
     const nlohmann::json& raw() const { return *value_; }
     const std::string& path() const { return path_; }
@@ -50,9 +51,10 @@ public:
     JsonIn at(std::size_t index) const;
 
     // Scalars.
-    double number() const;  ///< finite number
+    double number() const;                         ///< finite number
     double number_in(double lo, double hi) const;  ///< finite number in [lo, hi]
-    double positive() const;  ///< finite number > 0
+    double positive() const;                       ///< finite number > 0
+    double positive_up_to(double hi) const;        ///< finite number in (0, hi]
     std::int64_t integer() const;
     std::int64_t integer_in(std::int64_t lo, std::int64_t hi) const;
     bool boolean() const;

@@ -40,19 +40,22 @@ Mover Mover::within(double h) const {
     return h >= horizon ? *this : make_mover(k, h, decelerating);
 }
 
-Mover make_mover(const motion::Kinematics& k, double horizon, bool decelerating_along_velocity) {
-    Mover m{k, horizon, 0.0, decelerating_along_velocity};
-    const double v = norm(k.v), a = norm(k.a);
+double reach_bound(double speed, double accel, double horizon, bool decelerating) {
+    double reach;
     if (std::isinf(horizon)) {
-        m.reach = (v == 0 && a == 0) ? 0.0 : kInf;
-    } else if (decelerating_along_velocity && a > 0) {
-        const double h = std::min(horizon, v / a);  // it stops, then stays
-        m.reach = v * h - 0.5 * a * h * h;
+        reach = (speed == 0 && accel == 0) ? 0.0 : kInf;
+    } else if (decelerating && accel > 0) {
+        const double h = std::min(horizon, speed / accel);  // it stops, then stays
+        reach = speed * h - 0.5 * accel * h * h;
     } else {
-        m.reach = v * horizon + 0.5 * a * horizon * horizon;
+        reach = speed * horizon + 0.5 * accel * horizon * horizon;
     }
-    m.reach = std::max(0.0, m.reach) * (1.0 + 1e-9) + 1e-12;
-    return m;
+    return std::max(0.0, reach) * (1.0 + 1e-9) + 1e-12;
+}
+
+Mover make_mover(const motion::Kinematics& k, double horizon, bool decelerating_along_velocity) {
+    return {k, horizon, reach_bound(norm(k.v), norm(k.a), horizon, decelerating_along_velocity),
+            decelerating_along_velocity};
 }
 
 Prediction ball_ball(const Mover& a, const Mover& b, double R, double horizon) {

@@ -29,6 +29,10 @@ struct Mover {
 
 Mover make_mover(const motion::Kinematics& k, double horizon, bool decelerating_along_velocity);
 
+/// Bound on the distance a ball with speed ≤ `speed` and acceleration of size `accel` travels
+/// within `horizon` (decelerating: accel opposes the velocity, so it stops).
+double reach_bound(double speed, double accel, double horizon, bool decelerating);
+
 /// A predicted contact: `tau` seconds from now (infinity: none). `pushing`: the contact is now,
 /// with no approach speed but an acceleration into it.
 struct Prediction {

@@ -39,6 +39,15 @@ struct Candidate {
 };
 
 class Simulation {
+    /// Per ball, for its current segment: the constant acceleration and its size, the end,
+    /// and the speed at the start (units: m/s², s, m/s).
+    struct Live {
+        Vec2 acc;
+        double end = kInf;
+        double speed = 0.0;
+        double accel = 0.0;
+    };
+
 public:
     Simulation(const Table& table, const Params& params, std::span<const BallState> balls,
                const SimOptions& options)
@@ -49,7 +58,7 @@ public:
             BallState s = balls[i];
             if (s.motion != Motion::pocketed) s = motion::settle(params_, s);
             segments_[i].push_back({0.0, s});
-            live_[i] = {motion::acceleration(params_, s), motion::duration(params_, s)};
+            live_[i] = make_live(s, 0.0);
         }
         for (std::size_t i = 0; i < n_; ++i) predict_for(i);
     }
@@ -69,7 +78,15 @@ public:
     /// One turn of the pipeline. False once every ball is at rest, or at the event cap.
     bool step() {
         const Candidate next = earliest();
-        if (std::isinf(next.time)) return false;
+        if (std::isinf(next.time)) {
+            // No event left. With a friction of zero a ball can move forever: that shot never
+            // ends, and is reported like one cut at the cap.
+            for (std::size_t i = 0; i < n_; ++i) {
+                const Motion m = current(i).start.motion;
+                truncated_ = truncated_ || (m != Motion::stationary && m != Motion::pocketed);
+            }
+            return false;
+        }
         if (events_.size() >= options_.max_events) {
             truncated_ = true;
             return false;
@@ -112,7 +129,11 @@ private:
 
     void start_segment(std::size_t i, const BallState& s) {
         segments_[i].push_back({now_, s});
-        live_[i] = {motion::acceleration(params_, s), now_ + motion::duration(params_, s)};
+        live_[i] = make_live(s, now_);
+    }
+    Live make_live(const BallState& s, double t0) const {
+        const Vec2 a = motion::acceleration(params_, s);
+        return {a, t0 + motion::duration(params_, s), norm(s.vel), norm(a)};
     }
 
     Event make_event(EventType type, std::initializer_list<std::size_t> balls) const {
@@ -173,13 +194,27 @@ private:
         }
         own_[i] = own;
         // Pairs: a contact after either ball's own next event need not be searched, since that
-        // event re-predicts every pair of the ball.
+        // event re-predicts every pair of the ball. Pairs farther apart than both balls can
+        // travel by then are skipped before any polynomial is built.
+        const motion::Kinematics ki = kinematics(i);
+        const double speed_i = norm(ki.v);
+        const bool rolling_i = current(i).start.motion == Motion::rolling;
         for (std::size_t j = 0; j < n_; ++j) {
             if (j == i || !active(j)) continue;
             const double until = std::min(own_[i].time, own_[j].time);
             if (!(until >= now_)) continue;
-            const detect::Prediction p =
-                detect::ball_ball(mover(i, until), mover(j, until), R, until - now_);
+            const double h = until - now_;
+            const bool rolling_j = current(j).start.motion == Motion::rolling;
+            // |v_j(now)| ≤ |v_j(t0)| + |a_j|·(now − t0): no square root per pair.
+            const double speed_j = live_[j].speed + live_[j].accel * (now_ - current(j).t0);
+            const double reach_i = detect::reach_bound(speed_i, live_[i].accel, h, rolling_i);
+            const double reach_j = detect::reach_bound(speed_j, live_[j].accel, h, rolling_j);
+            if (reach_i == 0 && reach_j == 0) continue;
+            const motion::Kinematics kj = kinematics(j);
+            const double limit = 2 * R + reach_i + reach_j;
+            if (norm2(kj.p - ki.p) > limit * limit) continue;
+            const detect::Prediction p = detect::ball_ball({ki, h, reach_i, rolling_i},
+                                                           {kj, h, reach_j, rolling_j}, R, h);
             if (std::isinf(p.tau)) continue;
             const auto [lo, hi] = std::minmax(i, j);
             pair(i, j) = Candidate{now_ + p.tau, Kind::ball_ball, static_cast<int>(lo),
@@ -302,11 +337,6 @@ private:
     bool truncated_ = false;
     std::vector<std::vector<Segment>> segments_;
     std::vector<Event> events_;
-    /// Per ball: the current segment's constant acceleration and its end (unit: m/s², s).
-    struct Live {
-        Vec2 acc;
-        double end = kInf;
-    };
     std::array<Live, kMaxBalls> live_{};
     std::array<Candidate, kMaxBalls> own_{};
     static constexpr int kJamContacts = 16;

@@ -1,0 +1,41 @@
+// `judge` (cli-contract.md): a game's state before a shot + the shot's events → the verdict and
+// the state before the next shot. Reading and writing live in rules_json; the rules in src/rules.
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "cli/json_in.hpp"
+#include "cli/physics_input.hpp"
+#include "cli/rules_json.hpp"
+#include "physics/params.hpp"
+#include "physics/table.hpp"
+#include "rules/judge.hpp"
+
+namespace cli {
+
+namespace {
+
+// The output document in the contract's field order.
+nlohmann::ordered_json judge_document(const nlohmann::json& input) {
+    JsonIn in(input, "");
+    in.expect_object({"game", "table", "options", "state", "events"});
+    const rules::Game game = read_game(in.at("game"));
+    const physics::Params params;  // the rules need only the ball radius
+    physics::TableSpec spec = *physics::table_preset("9ft");
+    if (auto t = in.find("table")) spec = read_table(*t, params.ball_radius);
+    rules::Options options;
+    if (auto o = in.find("options")) options = read_options(*o);
+    const physics::Table table = physics::build_table(spec);
+    const rules::GameState state = read_state(in.at("state"), game, table, params);
+    const std::vector<physics::Event> events = read_events(in.at("events"), game, state);
+
+    const rules::Ruleset ruleset{game, options, {spec.length, spec.width, params.ball_radius}};
+    return to_json(rules::judge(ruleset, state, events));
+}
+
+}  // namespace
+
+nlohmann::ordered_json judge_command(const nlohmann::json& input) {
+    return judge_document(input);
+}
+
+}  // namespace cli

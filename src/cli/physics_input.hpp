@@ -1,0 +1,52 @@
+// Reading the physics parts of an input document (tables, parameters, models, balls, strokes)
+// with the checks of cli-contract.md: every bad value throws BadInput naming its JSON path.
+#pragma once
+
+#include <vector>
+
+#include "cli/json_in.hpp"
+#include "physics/ball_state.hpp"
+#include "physics/params.hpp"
+#include "physics/stroke.hpp"
+#include "physics/table.hpp"
+
+namespace cli {
+
+/// Sanity bounds on input values: far outside anything physical, they keep every number the
+/// engine computes finite (docs/cli.md lists them).
+namespace limits {
+inline constexpr double max_coordinate = 1000.0;  ///< |x|, |y| of a ball (unit: m)
+inline constexpr double max_ball_speed = 100.0;   ///< |vel| of a ball (unit: m/s)
+inline constexpr double max_ball_spin = 10000.0;  ///< |spin| of a ball (unit: rad/s)
+inline constexpr double max_cue_speed = 20.0;     ///< strike speed (unit: m/s)
+inline constexpr double max_table_size = 100.0;   ///< table lengths (unit: m)
+}  // namespace limits
+
+/// `table`: a preset name ("7ft", "8ft", "9ft", "unbounded") or an object
+/// {"preset": "9ft", "length": ..., ...}; validated for a ball of radius `ball_radius`.
+physics::TableSpec read_table(const JsonIn& in, double ball_radius);
+
+/// `params`: partial overrides of the defaults, with their accepted ranges.
+physics::Params read_params(const JsonIn& in);
+
+/// `models`: {"ball_ball": "frictional" | "frictionless", "cushion": "han2005" | "simple"}.
+physics::Models read_models(const JsonIn& in);
+
+/// [x, y] and [x, y, z]: arrays of exactly 2 or 3 finite numbers.
+physics::Vec2 read_vec2(const JsonIn& in);
+physics::Vec3 read_vec3(const JsonIn& in);
+
+/// `balls`: [{"id": 0, "pos": [x, y], "vel": [vx, vy], "spin": [wx, wy, wz]}, ...], with
+/// unique ids 0–15, checked against the table (physics::validate_layout): no overlaps, every
+/// centre on the playing surface. Motion states are set from velocity and spin.
+std::vector<physics::BallState> read_balls(const JsonIn& in, const physics::Table& table,
+                                           const physics::Params& params);
+
+/// `rack`: {"game": "8ball" | "9ball", "seed": 7, "cue_pos": [x, y]} → the racked balls.
+std::vector<physics::BallState> read_rack(const JsonIn& in, const physics::Table& table,
+                                          const physics::Params& params);
+
+/// `strike`: {"speed", "heading_deg", "side", "top", "elevation_deg"} (speed required).
+physics::Stroke read_stroke(const JsonIn& in);
+
+}  // namespace cli
