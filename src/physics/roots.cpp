@@ -2,23 +2,35 @@
 //
 // Method: recursive derivative isolation with safeguarded Newton iteration, after
 //   G. E. Collins and R. Loos, "Polynomial real root isolation by differentiation",
-//   Proc. SYMSAC '76, pp. 15–25 (the roots of p' split the line into pieces on which p is
-//   monotone, so each piece holds at most one root), and
+//   Proc. SYMSAC '76, pp. 15–25 (the sign changes of p' split the interval into pieces on which
+//   p is monotone, so each piece holds at most one root), and
 //   C. Yuksel, "High-Performance Polynomial Root Finding for Graphics", Proc. ACM Comput.
 //   Graph. Interact. Tech. 5(3), 2022 (the same isolation done numerically, each monotone
 //   piece solved by Newton's method with a bisection fallback),
-// with a safeguard in the manner of "rtsafe" (Press et al., Numerical Recipes, 3rd ed., §9.4):
-// a Newton step that leaves the bracket, or is not at most half the previous step, is replaced
-// by a bisection.
+// safeguarded in the manner of "rtsafe" (Press et al., Numerical Recipes, 3rd ed., §9.4): the
+// bracket always holds the sign change, and a Newton step that leaves it, or converges only
+// linearly (at a triple root, say), gives way to a bisection — or first to one step of
+// Schröder's variant, Newton on p/p', which restores fast convergence at multiple roots.
 //
 // Why this method: the contact polynomials of the physics are often degenerate (a stationary
 // pair is a constant, motion parallel to a rail loses the leading terms, a grazing contact is a
 // near-double root). Closed forms (Ferrari, Cardano) divide by the leading coefficient and lose
-// all accuracy there; isolation never does (the only division by a leading coefficient is the
-// root of a linear derivative, whose result is only compared with the interval). Every decision
-// ("is there a root in this piece?") is made from the sign of p evaluated at a point, so the
-// answers are consistent with p itself: a root is reported exactly where the computed p changes
-// sign, and a double root (p touches 0 without changing sign) is not reported.
+// all accuracy there; isolation never needs to: the roots it divides out are only candidates
+// compared with the interval, so a tiny leading coefficient just puts them far away. Every
+// decision ("is there a root in this piece?") is made from the sign of p evaluated at a point,
+// so the answers agree with p itself: a root is reported where the computed p changes sign, and
+// a double root (p touches 0 without changing sign) is not reported. Where p is below its own
+// rounding noise the sign means nothing; such values count as 0 (see value_or_noise_zero).
+//
+// Cost (a typical contact quartic: ~75 ns on the 2-core development machine): the critical
+// points of p' (roots of the quadratic p'') come from the closed form; those of p (roots of
+// the cubic p') are needed only until the sign of p there is certain, often after one Newton
+// step; first_downward_crossing stops at the first crossing and never looks for later critical
+// points; and Newton starts from the root of a Taylor parabola at an end of the piece, so two
+// or three steps reach full precision. Polynomials are evaluated in Estrin's form (Knuth,
+// TAOCP vol. 2, §4.6.4), which shortens the dependency chain of each Newton step, and whose
+// rounding error is no larger than Horner's. No allocation, no exceptions, no FMA: the same
+// input gives the same bits everywhere.
 #include "physics/roots.hpp"
 
 #include <bit>
@@ -31,51 +43,41 @@ namespace physics::roots {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kEps = std::numeric_limits<double>::epsilon();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kEps = std::numeric_limits<double>::epsilon();
 
-/// Newton stops once a step is below this many units of |x|·ε: the next step would be far
-/// below an ulp while convergence is quadratic.
-constexpr double kStepUlps = 2.0;
-/// Guard on the iteration count. Bisection halves the bracket in the ordering of doubles, so
-/// 64 bisections reach adjacent doubles; Newton and bisection alternate at worst.
-constexpr int kMaxIterations = 160;
+/// Guard on the iteration count; bisection alone would reach adjacent doubles in ~60 steps for
+/// any bracket met in practice.
+constexpr int kMaxIterations = 200;
+/// Newton's error after a step of size s is about K·s² with K = |p''/2p'| (quadratic
+/// convergence). Once that is below an ulp the iterate is final without another evaluation,
+/// provided the step is already small enough for the quadratic model to hold.
+constexpr double kModelStep = 1e-5;  // relative
+/// Relative accuracy of a reported root: a quarter ulp, as far as Newton's model can tell.
+constexpr double kRootTolerance = 0.25 * kEps;
+/// Relative accuracy of a critical point. It only needs to put p's value there on the right
+/// side of 0: an error δ changes p by ½p''δ², here ~1e-20 of p's scale, far below p's own
+/// rounding noise, so the full precision of a root would buy nothing.
+constexpr double kCriticalTolerance = 1e-10;
 
 /// Coefficients of a polynomial of degree N (c[N] ≠ 0), lowest order first.
 template <int N>
 using Coeffs = std::array<double, N + 1>;
 
+/// p(t). Estrin's form for the cubic and quartic: shorter latency than Horner, and a rounding
+/// error below γ_2N·Σ|c_i||t|^i as Horner's (at most 6 roundings on any term of a quartic).
 template <int N>
 double value(const Coeffs<N>& c, double t) {
-    double f = c[N];
-    for (int i = N - 1; i >= 0; --i) f = f * t + c[i];
-    return f;
-}
-
-/// Value at t, rounded to exactly 0 when it is below the rounding error bound of Horner's rule,
-/// γ_2N·Σ|c_i||t|^i ≈ N·ε·Σ|c_i||t|^i (Higham, "Accuracy and Stability of Numerical
-/// Algorithms", 2nd ed., §5.1): there the computed sign is noise. Used at critical points, so
-/// that a double root (or the double root of p' at a triple root of p) whose computed value
-/// wobbles around 0 counts as a touch, not as a pair of spurious sign changes.
-template <int N>
-double value_or_noise_zero(const Coeffs<N>& c, double t) {
-    double f = c[N], size = std::fabs(c[N]);
-    const double abs_t = std::fabs(t);
-    for (int i = N - 1; i >= 0; --i) {
-        f = f * t + c[i];
-        size = size * abs_t + std::fabs(c[i]);
-    }
-    return std::fabs(f) <= N * kEps * size ? 0.0 : f;
-}
-
-/// Value and first derivative at t in one Horner pass.
-template <int N>
-void value_and_slope(const Coeffs<N>& c, double t, double& f, double& df) {
-    f = c[N];
-    df = 0.0;
-    for (int i = N - 1; i >= 0; --i) {
-        df = df * t + f;
-        f = f * t + c[i];
+    if constexpr (N == 4) {
+        const double t2 = t * t;
+        return (c[0] + c[1] * t) + t2 * ((c[2] + c[3] * t) + c[4] * t2);
+    } else if constexpr (N == 3) {
+        const double t2 = t * t;
+        return (c[0] + c[1] * t) + t2 * (c[2] + c[3] * t);
+    } else {
+        double f = c[N];
+        for (int i = N - 1; i >= 0; --i) f = f * t + c[i];
+        return f;
     }
 }
 
@@ -88,6 +90,47 @@ double value_or_limit(const Coeffs<N>& c, double t) {
     return (c[N] > 0.0) != flips ? kInf : -kInf;
 }
 
+/// Value at t, rounded to exactly 0 when it is below the rounding error bound of the evaluation,
+/// γ_2N·Σ|c_i||t|^i ≈ N·ε·Σ|c_i||t|^i (Higham, "Accuracy and Stability of Numerical
+/// Algorithms", 2nd ed., §5.1): there the computed sign is noise. Used at critical points, so
+/// that a double root (or the double root of p' at a triple root of p) whose computed value
+/// wobbles around 0 counts as a touch, not as a pair of spurious sign changes.
+template <int N>
+double value_or_noise_zero(const Coeffs<N>& c, double t) {
+    const double f = value<N>(c, t);
+    double size = std::fabs(c[N]);
+    const double abs_t = std::fabs(t);
+    for (int i = N - 1; i >= 0; --i) size = size * abs_t + std::fabs(c[i]);
+    return std::fabs(f) <= N * kEps * size && size < kInf ? 0.0 : f;  // (not if it overflowed)
+}
+
+/// p(t), p'(t) and p''(t)/2 in one pass (Estrin's form for N ≥ 3, else Horner's). p(t) is
+/// computed exactly as by value(), so the signs seen by Newton and by the walk agree.
+template <int N>
+void value_slope_half_curvature(const Coeffs<N>& c, double t, double& f, double& df,
+                                double& half_d2f) {
+    if constexpr (N == 4) {
+        const double t2 = t * t;
+        f = (c[0] + c[1] * t) + t2 * ((c[2] + c[3] * t) + c[4] * t2);
+        df = (c[1] + (2.0 * c[2]) * t) + t2 * ((3.0 * c[3]) + (4.0 * c[4]) * t);
+        half_d2f = (c[2] + (3.0 * c[3]) * t) + (6.0 * c[4]) * t2;
+    } else if constexpr (N == 3) {
+        const double t2 = t * t;
+        f = (c[0] + c[1] * t) + t2 * (c[2] + c[3] * t);
+        df = (c[1] + (2.0 * c[2]) * t) + (3.0 * c[3]) * t2;
+        half_d2f = c[2] + (3.0 * c[3]) * t;
+    } else {
+        f = c[N];
+        df = 0.0;
+        half_d2f = 0.0;
+        for (int i = N - 1; i >= 0; --i) {
+            half_d2f = half_d2f * t + df;
+            df = df * t + f;
+            f = f * t + c[i];
+        }
+    }
+}
+
 template <int N>
 Coeffs<N - 1> derivative(const Coeffs<N>& c) {
     Coeffs<N - 1> d{};
@@ -95,36 +138,40 @@ Coeffs<N - 1> derivative(const Coeffs<N>& c) {
     return d;
 }
 
-/// Doubles in increasing order map to increasing integers.
-std::int64_t ordered_bits(double x) {
-    const auto bits = std::bit_cast<std::int64_t>(std::fabs(x));
-    return x < 0.0 ? -bits : bits;
+bool opposite_signs(double fa, double fb) {
+    return (fa < 0.0 && fb > 0.0) || (fa > 0.0 && fb < 0.0);
 }
 
-double from_ordered_bits(std::int64_t k) {
-    const double magnitude = std::bit_cast<double>(k < 0 ? -k : k);
-    return k < 0 ? -magnitude : magnitude;
-}
+/// One end of a piece: where, and the value of p there.
+struct End {
+    double x;
+    double f;
+};
 
-/// Midpoint of [a, b] in the ordering of doubles, not of reals: a root near 0 in a bracket
-/// like [1e-300, 1] is reached in ~64 halvings instead of ~1000. Within one binade it is the
-/// ordinary midpoint. A bracket that straddles 0 is split at 0 first.
+/// Midpoint of a bracket [a, b]. A bracket around 0 is split at 0 first, which finds a root
+/// there exactly (p(0) = c[0]) and keeps the precision relative for roots near it. A bracket
+/// spanning many binades (|b/a| > 2³², or an end at 0) is split at the geometric mean, by
+/// averaging the bit patterns of the ends (a 0 end counting as 2⁻⁵²·|other end|), so that a
+/// root anywhere in [1, 1e300] is reached in ~60 bisections, not ~1000.
 double bisect(double a, double b) {
     if (a < 0.0 && b > 0.0) return 0.0;
-    const std::int64_t ka = ordered_bits(a), kb = ordered_bits(b);
-    return from_ordered_bits(ka + (kb - ka) / 2);
+    const double lo = std::fabs(a) < std::fabs(b) ? std::fabs(a) : std::fabs(b);
+    const double hi = std::fabs(a) < std::fabs(b) ? std::fabs(b) : std::fabs(a);
+    if (!(hi > 0x1p32 * lo)) return a + 0.5 * (b - a);
+    const auto low_bits = std::bit_cast<std::uint64_t>(lo > 0.0 ? lo : 0x1p-52 * hi);
+    const auto high_bits = std::bit_cast<std::uint64_t>(hi);
+    const double middle = std::bit_cast<double>(low_bits + (high_bits - low_bits) / 2);
+    return a < 0.0 || b < 0.0 ? -middle : middle;
 }
-
-bool opposite_signs(double fa, double fb) { return (fa < 0.0 && fb > 0.0) || (fa > 0.0 && fb < 0.0); }
 
 /// Moves the infinite end of a bracket to a finite point where p still has that end's sign, by
 /// steps doubling away from the finite end `x0` (p is monotone beyond the last critical point,
-/// so the root stays inside). Returns the new end, or x0's side ±∞ if p keeps its sign until
-/// overflow (the root is beyond the doubles); `exact_root` is set if p vanishes at a step.
+/// so the root stays inside). Returns the new end, or ±∞ if p keeps its sign until overflow
+/// (the root is beyond the doubles); `exact_root` is set if p vanishes at a step.
 template <int N>
 double finite_end(const Coeffs<N>& c, double& x0, double& f0, double direction, bool& exact_root) {
     exact_root = false;
-    for (double step = std::fmax(1.0, std::fabs(x0));; step *= 2.0) {
+    for (double step = std::fabs(x0) > 1.0 ? std::fabs(x0) : 1.0;; step *= 2.0) {
         const double x = x0 + direction * step;
         if (!std::isfinite(x)) return direction * kInf;
         const double fx = value<N>(c, x);
@@ -135,12 +182,19 @@ double finite_end(const Coeffs<N>& c, double& x0, double& f0, double direction, 
     }
 }
 
-/// The root of p in [a, b] (a < b), given p(a) = fa and p(b) = fb of strictly opposite signs and
-/// a starting guess (used if it lies strictly inside). Safeguarded Newton: the bracket always
-/// holds the sign change and shrinks with every evaluation.
-template <int N>
-double solve_in_bracket(const Coeffs<N>& c, double a, double fa, double b, double fb,
-                        double guess) {
+/// Never stops a solve early: roots are wanted to full precision.
+struct ToFullPrecision {
+    bool operator()(double, double, double, double) const { return false; }
+};
+
+/// The root of p in [a, b] (a < b), given p(a) = fa and p(b) = fb of strictly opposite signs,
+/// starting from `x0` if it lies in [a, b] (else from the regula falsi point). Safeguarded
+/// Newton: the bracket always holds the sign change and shrinks with every evaluation.
+/// `good_enough(x, p(x), a, b)`, asked at each iterate with the current bracket, may end the
+/// search there (a critical point is wanted only as far as it decides a sign).
+template <int N, typename GoodEnough = ToFullPrecision>
+double solve_in_bracket(const Coeffs<N>& c, double a, double fa, double b, double fb, double x0,
+                        double tolerance, GoodEnough good_enough = {}) {
     if (std::isinf(a) && std::isinf(b)) {  // the whole line: split it at 0
         if (c[0] == 0.0) return 0.0;
         if (opposite_signs(fa, c[0])) {
@@ -164,92 +218,195 @@ double solve_in_bracket(const Coeffs<N>& c, double a, double fa, double b, doubl
         }
     }
     const bool rising = fa < 0.0;  // p < 0 on a's side of the root
-    // Regula falsi start: for a monotone piece it lies between the ends, near the root.
-    double x = (guess > a && guess < b) ? guess : a - fa * ((b - a) / (fb - fa));
+    double x = (x0 >= a && x0 <= b) ? x0 : a - fa * ((b - a) / (fb - fa));
+    if (!(x >= a && x <= b)) x = bisect(a, b);  // p overflowed to ±∞ at an end
     double last_step = b - a;
+    bool schroder = false;  // the last step was Schröder's
     for (int i = 0; i < kMaxIterations; ++i) {
-        double f, df;
-        value_and_slope<N>(c, x, f, df);
+        double f, df, half_d2f;
+        value_slope_half_curvature<N>(c, x, f, df, half_d2f);
         if (f == 0.0) return x;
         if ((f < 0.0) == rising) {
             a = x;
         } else {
             b = x;
         }
-        const double newton_step = f / df;  // ±∞ if df = 0: rejected below
-        double next = x - newton_step;
-        // Bisect if Newton leaves the bracket, or converges only linearly (a step over half the
-        // last one: far from the root, or at a triple root, where Newton's ratio is 2/3).
-        if (!(next > a && next < b) || 2.0 * std::fabs(newton_step) > std::fabs(last_step)) {
-            next = bisect(a, b);
+        if (good_enough(x, f, a, b)) return x;
+        const double newton_step = f / df;  // ±∞ or NaN if df = 0: rejected below
+        const double newton_x = x - newton_step;
+        // Converged once the step is an ulp, or Newton's own error estimate K·s² (K = |p''/2p'|,
+        // valid once the step is small) is below the tolerance. The target is clamped into the
+        // bracket: with the root within an ulp of an end, rounding can put it just beyond.
+        const double scale = std::fabs(x);
+        if (std::fabs(newton_step) <= kModelStep * scale &&
+            (std::fabs(newton_step) <= kEps * scale ||
+             std::fabs(half_d2f) * newton_step * newton_step <=
+                 tolerance * scale * std::fabs(df))) {
+            return newton_x < a ? a : (newton_x > b ? b : newton_x);
         }
+        // Newton's step is taken if it stays in the bracket and is at most half the last one.
+        // A longer step means slow (linear) convergence: far from the root, or at a root of
+        // multiplicity m (a triple root, or a tight cluster), where each step gains only a
+        // factor (m−1)/m. Then the step of Newton's method applied to p/p', whose roots are all
+        // simple (E. Schröder, Math. Ann. 2, 1870, pp. 317–365), is tried; failing that, or
+        // right after it (it is never taken twice running), bisection.
+        double next = newton_x;
+        const bool after_schroder = schroder;
+        schroder = false;
+        if (!(newton_x > a && newton_x < b &&
+              2.0 * std::fabs(newton_step) <= std::fabs(last_step))) {
+            // But first stop if p(x) is rounding noise: near a multiple or clustered root the
+            // computed sign is random in a band around it, and bisecting to adjacent doubles
+            // would buy only another point of the same band.
+            if (value_or_noise_zero<N>(c, x) == 0.0) return x;
+            next = x - f * df / (df * df - 2.0 * f * half_d2f);
+            schroder = !after_schroder && next > a && next < b;
+            if (!schroder) next = bisect(a, b);
+        }
+        if (next == a || next == b) return x;  // a and b are adjacent doubles
         last_step = next - x;
-        if (std::fabs(last_step) <= kStepUlps * kEps * std::fabs(next)) return next;
-        if (next == x) return x;  // a and b are adjacent doubles
         x = next;
     }
     return x;
 }
 
-/// Roots of p where its sign changes, strictly inside (lo, hi), ascending; returns the count.
-/// Used for critical points: an end of the interval is never needed as a split point.
+/// How far into a piece, from its end e (direction +1 from the left end, −1 from the right),
+/// p reaches 0 according to its Taylor parabola there. Near a critical point, p' ≈ 0 and this
+/// is where the osculating parabola crosses 0: exact for a quadratic, and close for a grazing
+/// contact, whose root sits near the minimum of the distance. At lo or hi it is a Newton step
+/// corrected for curvature. With u ≥ 0 the distance into the piece, p + B·u + h·u² = 0
+/// (B = direction·p', h = p''/2), scaled by σ = −sign p, has its smallest positive root at
+/// u = 2|p| / (σB + √(B² − 4h·p)): no cancellation, and +∞ where it has no root ahead (then the
+/// other end, or regula falsi, is used). If it has no real root at all, a plain Newton step.
 template <int N>
-int interior_roots(const Coeffs<N>& c, double lo, double hi, double* out);
-
-template <>
-int interior_roots<1>(const Coeffs<1>& c, double lo, double hi, double* out) {
-    // Linear base case, the one place that divides by a leading coefficient: a tiny c[1] gives
-    // a huge or infinite candidate, which the comparison discards.
-    const double r = -c[0] / c[1];
-    if (r > lo && r < hi) {
-        out[0] = r;
-        return 1;
-    }
-    return 0;
+double taylor_reach(const Coeffs<N>& c, const End& e, double direction) {
+    if (std::isinf(e.x)) return kInf;
+    double f, df, half_d2f;
+    value_slope_half_curvature<N>(c, e.x, f, df, half_d2f);
+    const double toward_zero = e.f < 0.0 ? direction * df : -direction * df;  // σ·B
+    const double disc = df * df - 4.0 * half_d2f * e.f;
+    if (disc < 0.0) return toward_zero > 0.0 ? std::fabs(e.f) / toward_zero : kInf;
+    const double denominator = toward_zero + std::sqrt(disc);
+    return denominator > 0.0 ? 2.0 * std::fabs(e.f) / denominator : kInf;
 }
+
+/// Where Newton starts in a piece: the Taylor estimate from whichever end it is shorter from,
+/// since its error grows with the cube of the distance. (A further correction from the cubic
+/// Taylor term saves Newton a step but costs as much on the critical path.)
+template <int N>
+double start_point(const Coeffs<N>& c, const End& a, const End& b) {
+    const double from_a = taylor_reach<N>(c, a, 1.0), from_b = taylor_reach<N>(c, b, -1.0);
+    return from_a <= from_b ? a.x + from_a : b.x - from_b;  // ∞ or NaN: regula falsi
+}
+
+template <int N, typename GoodEnough = ToFullPrecision>
+double solve_piece(const Coeffs<N>& c, const End& a, const End& b, double tolerance,
+                   GoodEnough good_enough = {}) {
+    return solve_in_bracket<N>(c, a.x, a.f, b.x, b.f, start_point<N>(c, a, b), tolerance,
+                               good_enough);
+}
+
+/// Calls `visit(x)` for each root of p where its sign changes strictly inside (lo, hi), in
+/// increasing order, until it returns true; returns whether it did. These are the critical
+/// points of the next level up, which consumes them as they come: first_downward_crossing stops
+/// at its first crossing without finding the later critical points. A root found by iteration
+/// may be cut short where `good_enough` says so (see walk_sign_changes).
+template <int N, typename Visit, typename GoodEnough>
+bool for_each_interior_root(const Coeffs<N>& c, double lo, double hi, Visit visit,
+                            GoodEnough good_enough);
 
 /// Walks the pieces between lo, the critical points (sign changes of p') and hi, on each of
-/// which p is monotone, and calls `on_root(a, fa, b, fb, zero_at)` for each sign change of p,
-/// in increasing order, until it returns true. [a, b] brackets the change with fa = p(a) ≠ 0;
-/// fb = p(b) is nonzero of the other sign, or 0 only when b = hi. A value at a critical point
-/// that is 0 up to rounding marks a root there only if the signs on both sides differ (a zero
-/// at an extremum is a touch, not a crossing); `zero_at` is then the first such zero, else NaN.
-/// A zero at lo starts no crossing: lo's own root is the caller's business. The values at lo
-/// and hi are taken as computed: a touching pair has a tiny but accurate p(lo).
+/// which p is monotone (or, where a critical point was only located as far as needed, changes
+/// sign at most once), and calls `on_root(a, b, zero_at)` for each sign change of p, in
+/// increasing order, until it returns true; returns whether it did. The ends a, b bracket the
+/// change: a.f ≠ 0, and b.f is nonzero of the other sign, or 0 only when b is hi. A value at a
+/// critical point that is 0 up to rounding marks a root there only if the signs on both sides
+/// differ (a zero at an extremum is a touch, not a crossing); `zero_at` is then the first such
+/// zero, else NaN. A zero at lo starts no crossing: lo's own root is the caller's business. The
+/// values at lo and hi are taken as computed: a touching pair has a tiny but accurate p(lo).
 template <int N, typename OnRoot>
-void walk_sign_changes(const Coeffs<N>& c, double lo, double hi, OnRoot on_root) {
-    double critical[N > 1 ? N - 1 : 1];
-    int n_critical = 0;
-    if constexpr (N > 1) n_critical = interior_roots<N - 1>(derivative<N>(c), lo, hi, critical);
-    double a = lo, fa = value_or_limit<N>(c, lo);
+bool walk_sign_changes(const Coeffs<N>& c, double lo, double hi, OnRoot on_root) {
+    End a{lo, value_or_limit<N>(c, lo)};
     double zero_at = kNaN;
-    for (int k = 0; k <= n_critical; ++k) {
-        const bool last = k == n_critical;
-        const double b = last ? hi : critical[k];
-        const double fb = last ? value_or_limit<N>(c, b) : value_or_noise_zero<N>(c, b);
-        if (fb == 0.0) {
-            if (std::isnan(zero_at)) zero_at = b;
-            if (!last) continue;
+    auto reach = [&](const End& b, bool last) {
+        if (b.f == 0.0) {
+            if (std::isnan(zero_at)) zero_at = b.x;
+            if (!last) return false;
         }
-        if (opposite_signs(fa, fb) || (fb == 0.0 && fa != 0.0)) {
-            if (on_root(a, fa, b, fb, zero_at)) return;
+        if (opposite_signs(a.f, b.f) || (b.f == 0.0 && a.f != 0.0)) {
+            if (on_root(a, b, zero_at)) return true;
         }
         a = b;
-        fa = fb;
         zero_at = kNaN;
+        return false;
+    };
+    if constexpr (N > 1) {
+        // A critical point c is needed only as far as it decides the sign of p there, and any
+        // point x of the bracket around it where that sign is certain serves as well as c: the
+        // pieces either side of x still hold one sign change each at most (p runs on to c with
+        // the same sign, then turns). The sign of p(c) is certain at an iterate x when
+        //  - p(x) has the other sign than p at the previous split point: c, the extremum that
+        //    follows it, lies further from 0 still; or
+        //  - |p(x)| exceeds |p'(x)|·(bracket width), a bound on |p(c) − p(x)| since p' is
+        //    monotone between x and c, where it vanishes.
+        // A grazing contact (p(c) ≈ 0) is certified by neither, and gets c to full precision.
+        End last_certified{kNaN, kNaN};
+        auto certified = [&](double x, double slope, double left, double right) {
+            const double px = value_or_noise_zero<N>(c, x);
+            if (px == 0.0) return false;
+            if ((std::isnan(zero_at) && opposite_signs(a.f, px)) ||
+                std::fabs(px) > std::fabs(slope) * (right - left)) {
+                last_certified = {x, px};
+                return true;
+            }
+            return false;
+        };
+        auto split_at = [&](double x) {
+            const double px =
+                x == last_certified.x ? last_certified.f : value_or_noise_zero<N>(c, x);
+            return reach(End{x, px}, false);
+        };
+        const bool stopped =
+            for_each_interior_root<N - 1>(derivative<N>(c), lo, hi, split_at, certified);
+        if (stopped) return true;
     }
+    return reach(End{hi, value_or_limit<N>(c, hi)}, true);
 }
 
-template <int N>
-int interior_roots(const Coeffs<N>& c, double lo, double hi, double* out) {
-    int n = 0;
-    walk_sign_changes<N>(c, lo, hi, [&](double a, double fa, double b, double fb, double zero_at) {
-        if (fb != 0.0) {  // a zero at hi is not interior
-            out[n++] = std::isnan(zero_at) ? solve_in_bracket<N>(c, a, fa, b, fb, kNaN) : zero_at;
+template <int N, typename Visit, typename GoodEnough>
+bool for_each_interior_root(const Coeffs<N>& c, double lo, double hi, Visit visit,
+                            GoodEnough good_enough) {
+    if constexpr (N == 1) {
+        // Linear base case: a tiny c[1] gives a huge or infinite candidate, which the comparison
+        // with the interval discards (c[1] = 0 gives ±∞ or NaN, discarded alike).
+        const double r = -c[0] / c[1];
+        return r > lo && r < hi && visit(r);
+    } else if constexpr (N == 2) {
+        // Quadratic base case (the p'' of a quartic, the p' of a cubic), by the closed form: its
+        // roots only split the next level into monotone pieces, so they need no sign
+        // bookkeeping. The cancellation-free form (Press et al. §5.6) gives the root of smaller
+        // magnitude as c/q; the other one follows from the vertex −b/2a, the linear base case of
+        // this quadratic's own derivative, so a tiny leading coefficient sends it far away
+        // harmlessly. Falls back to isolation if b² − 4ac overflows.
+        const double disc = c[1] * c[1] - 4.0 * c[2] * c[0];
+        if (std::isfinite(disc)) {
+            if (disc <= 0.0) return false;  // no real roots, or a double root: no sign change
+            const double q = -0.5 * (c[1] + std::copysign(std::sqrt(disc), c[1]));
+            const double near = c[0] / q;
+            const double far = 2.0 * (-c[1] / (2.0 * c[2])) - near;
+            const double r0 = near < far ? near : far, r1 = near < far ? far : near;
+            if (r0 > lo && r0 < hi && visit(r0)) return true;
+            return r1 > lo && r1 < hi && r1 != r0 && visit(r1);
         }
-        return false;
-    });
-    return n;
+    }
+    if constexpr (N >= 2) {
+        return walk_sign_changes<N>(c, lo, hi, [&](const End& a, const End& b, double zero_at) {
+            if (b.f == 0.0) return false;  // a zero at hi is not interior
+            return visit(std::isnan(zero_at)
+                             ? solve_piece<N>(c, a, b, kCriticalTolerance, good_enough)
+                             : zero_at);
+        });
+    }
 }
 
 /// True if p (with p(t) = 0) changes sign at t: the lowest nonzero Taylor coefficient about t,
@@ -270,9 +427,9 @@ bool changes_sign_at(const Coeffs<N>& c, double t) {
 template <int N>
 double first_down(const Coeffs<N>& c, double lo, double hi) {
     double t = kInf;
-    walk_sign_changes<N>(c, lo, hi, [&](double a, double fa, double b, double fb, double zero_at) {
-        if (fa < 0.0) return false;  // an upward crossing
-        t = std::isnan(zero_at) ? solve_in_bracket<N>(c, a, fa, b, fb, kNaN) : zero_at;
+    walk_sign_changes<N>(c, lo, hi, [&](const End& a, const End& b, double zero_at) {
+        if (a.f < 0.0) return false;  // an upward crossing
+        t = std::isnan(zero_at) ? solve_piece<N>(c, a, b, kRootTolerance) : zero_at;
         return true;
     });
     return t;
@@ -286,15 +443,12 @@ int all_sign_changes(const Coeffs<N>& c, double lo, double hi, std::array<double
     };
     if (root_at_end(lo)) out[n++] = lo;
     if (hi > lo) {
-        walk_sign_changes<N>(c, lo, hi,
-                             [&](double a, double fa, double b, double fb, double zero_at) {
-                                 if (fb != 0.0 && n < 4) {
-                                     out[n++] = std::isnan(zero_at)
-                                                    ? solve_in_bracket<N>(c, a, fa, b, fb, kNaN)
-                                                    : zero_at;
-                                 }
-                                 return false;
-                             });
+        walk_sign_changes<N>(c, lo, hi, [&](const End& a, const End& b, double zero_at) {
+            if (b.f != 0.0 && n < 4) {  // a zero at hi is handled below
+                out[n++] = std::isnan(zero_at) ? solve_piece<N>(c, a, b, kRootTolerance) : zero_at;
+            }
+            return false;
+        });
         if (root_at_end(hi) && n < 4) out[n++] = hi;
     }
     return n;
@@ -309,7 +463,7 @@ int degree(const Poly4& c) {
 }
 
 template <int N>
-Coeffs<N> leading(const Poly4& c) {
+Coeffs<N> lowest(const Poly4& c) {
     Coeffs<N> r{};
     for (int i = 0; i <= N; ++i) r[i] = c[i];
     return r;
@@ -317,27 +471,41 @@ Coeffs<N> leading(const Poly4& c) {
 
 }  // namespace
 
-double eval(const Poly4& c, double t) { return value<4>(c, t); }
+double eval(const Poly4& c, double t) {
+    double f = c[4];
+    for (int i = 3; i >= 0; --i) f = f * t + c[i];
+    return f;
+}
 
 double first_downward_crossing(const Poly4& c, double lo, double hi) {
     if (!(hi > lo)) return kInf;
     switch (degree(c)) {
-        case 4: return first_down<4>(leading<4>(c), lo, hi);
-        case 3: return first_down<3>(leading<3>(c), lo, hi);
-        case 2: return first_down<2>(leading<2>(c), lo, hi);
-        case 1: return first_down<1>(leading<1>(c), lo, hi);
-        default: return kInf;  // a constant never crosses
+        case 4:
+            return first_down<4>(lowest<4>(c), lo, hi);
+        case 3:
+            return first_down<3>(lowest<3>(c), lo, hi);
+        case 2:
+            return first_down<2>(lowest<2>(c), lo, hi);
+        case 1:
+            return first_down<1>(lowest<1>(c), lo, hi);
+        default:
+            return kInf;  // a constant never crosses
     }
 }
 
 int sign_change_roots(const Poly4& c, double lo, double hi, std::array<double, 4>& out) {
     if (!(hi >= lo)) return 0;
     switch (degree(c)) {
-        case 4: return all_sign_changes<4>(leading<4>(c), lo, hi, out);
-        case 3: return all_sign_changes<3>(leading<3>(c), lo, hi, out);
-        case 2: return all_sign_changes<2>(leading<2>(c), lo, hi, out);
-        case 1: return all_sign_changes<1>(leading<1>(c), lo, hi, out);
-        default: return 0;  // a constant has no sign change (and 0 has none either)
+        case 4:
+            return all_sign_changes<4>(lowest<4>(c), lo, hi, out);
+        case 3:
+            return all_sign_changes<3>(lowest<3>(c), lo, hi, out);
+        case 2:
+            return all_sign_changes<2>(lowest<2>(c), lo, hi, out);
+        case 1:
+            return all_sign_changes<1>(lowest<1>(c), lo, hi, out);
+        default:
+            return 0;  // a constant has no sign change (and 0 has none either)
     }
 }
 
