@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -19,5 +20,17 @@ nlohmann::ordered_json judge_command(const nlohmann::json& input);
 inline constexpr std::int64_t default_bench_runs = 2000;
 inline constexpr std::int64_t max_bench_runs = 1'000'000;
 nlohmann::ordered_json bench_command(std::int64_t runs = default_bench_runs);
+
+/// `match`: plays whole games between two players and returns the summary (docs/game.md).
+struct MatchOptions {
+    std::string game = "8ball";             ///< --game: "8ball" or "9ball"
+    std::string players = "random,random";  ///< --players: two of "random", "ai:LEVEL"
+    std::int64_t games = 100;               ///< --games
+    std::string seed = "1";                 ///< --seed: 0 to 2^64 - 1
+    std::string log;                        ///< --log: a file for one JSON line per shot
+    double noise = 1.0;                     ///< --noise: scale of the execution noise
+    bool duplicate = false;                 ///< --duplicate: each seed twice, sides swapped
+};
+nlohmann::ordered_json match_command(const MatchOptions& options);
 
 }  // namespace cli

@@ -2,6 +2,8 @@
 //   coolaaber-cli simulate [FILE] [--pretty]
 //   coolaaber-cli judge [FILE] [--pretty]
 //   coolaaber-cli bench [--runs N] [--pretty]
+//   coolaaber-cli match --game 8ball --players random,random [--games N] [--seed S] [--log FILE]
+//                       [--noise X] [--duplicate] [--pretty]
 // Exit status: 0 success; 2 bad input (one line on stderr: "error: <json path>: <message>",
 // nothing on stdout); 1 internal error.
 #include <cstdio>
@@ -85,10 +87,23 @@ int main(int argc, char** argv) {
         app.add_subcommand("simulate", "Simulate one shot: balls, a strike → events");
     CLI::App* judge = app.add_subcommand("judge", "Apply the rules of a game to one shot's events");
     CLI::App* bench = app.add_subcommand("bench", "Time the standard scenes");
+    cli::MatchOptions match_options;
+    CLI::App* match = app.add_subcommand("match", "Play whole games between two players");
+    match->add_option("--game", match_options.game, "8ball or 9ball")->capture_default_str();
+    match->add_option("--players", match_options.players, "Two players: random, ai:LEVEL")
+        ->capture_default_str();
+    match->add_option("--games", match_options.games, "Games to play")->capture_default_str();
+    match->add_option("--seed", match_options.seed, "Seed of the racks and the players")
+        ->capture_default_str();
+    match->add_option("--log", match_options.log, "Write one JSON line per shot to FILE");
+    match->add_option("--noise", match_options.noise, "Scale of the execution noise")
+        ->capture_default_str();
+    match->add_flag("--duplicate", match_options.duplicate,
+                    "Play each seed twice, the sides swapped");
     for (CLI::App* verb : {simulate, judge})
         verb->add_option("FILE", file, "Input JSON document; - or absent: standard input");
     bench->add_option("--runs", runs, "Simulations per scene")->capture_default_str();
-    for (CLI::App* a : {&app, simulate, judge, bench})
+    for (CLI::App* a : {&app, simulate, judge, bench, match})
         a->add_flag("--pretty", pretty, "Indent the output (default: one line)");
 
     try {
@@ -114,6 +129,9 @@ int main(int argc, char** argv) {
             text = cli::write_document(out, pretty);
         } else if (bench->parsed()) {
             nlohmann::ordered_json out = cli::bench_command(runs);
+            text = cli::write_document(out, pretty);
+        } else if (match->parsed()) {
+            nlohmann::ordered_json out = cli::match_command(match_options);
             text = cli::write_document(out, pretty);
         }
         return print_document(text);

@@ -12,6 +12,7 @@
 
 #include "cli/json_out.hpp"
 #include "cli/physics_input.hpp"
+#include "game/state_json.hpp"
 #include "physics/layout.hpp"
 #include "rules/names.hpp"
 
@@ -246,17 +247,6 @@ physics::Event read_event(const JsonIn& in, const rules::GameState& s, rules::Ga
     return e;
 }
 
-nlohmann::ordered_json groups_json(const std::optional<rules::Group>& group_a) {
-    if (!group_a) return nullptr;
-    return {{"A", name(*group_a)}, {"B", name(rules::other(*group_a))}};
-}
-
-template <typename E>
-nlohmann::ordered_json optional_name(const std::optional<E>& e) {
-    if (!e) return nullptr;
-    return name(*e);
-}
-
 }  // namespace
 
 rules::Game read_game(const JsonIn& in) {
@@ -327,66 +317,22 @@ std::vector<physics::Event> read_events(const JsonIn& in, rules::Game game,
     return events;
 }
 
+// The writers are the game module's (game/state_json.hpp): save files and `judge` output share
+// one schema.
 nlohmann::ordered_json to_json(const rules::GameState& s) {
-    nlohmann::ordered_json j;
-    j["shooter"] = name(s.shooter);
-    j["breaker"] = name(s.breaker);
-    j["shot"] = name(s.shot);
-    j["groups"] = groups_json(s.group_a);
-    j["on_table"] = s.on_table;
-    j["cue_ball"] = name(s.cue_ball);
-    switch (s.call.kind) {
-        case rules::Call::Kind::none:
-            j["call"] = nullptr;
-            break;
-        case rules::Call::Kind::safety:
-            j["call"] = "safety";
-            break;
-        case rules::Call::Kind::ball:
-            j["call"] = {{"ball", s.call.ball}, {"pocket", physics::pocket_name(s.call.pocket)}};
-            break;
-    }
-    j["fouls_in_row"] = {{"A", s.fouls_in_row[0]}, {"B", s.fouls_in_row[1]}};
-    j["warned"] = {{"A", s.warned[0]}, {"B", s.warned[1]}};
-    nlohmann::ordered_json positions = nlohmann::ordered_json::object();
-    for (const auto& [id, p] : s.positions) positions[std::to_string(id)] = to_json(p);
-    j["positions"] = positions;
-    return j;
+    return game::to_json(s);
 }
 
 nlohmann::ordered_json to_json(const rules::Options& o) {
-    return {{"call_shots", name(o.call_shots)},
-            {"eight_on_break", name(o.eight_on_break)},
-            {"foul_ball_in_hand", name(o.foul_ball_in_hand)},
-            {"scratch_on_eight_loses", o.scratch_on_eight_loses},
-            {"groups_on_break", o.groups_on_break},
-            {"rail_after_contact", o.rail_after_contact}};
+    return game::to_json(o);
 }
 
 nlohmann::ordered_json to_json(const std::optional<rules::Choice>& c) {
-    if (!c) return nullptr;
-    nlohmann::ordered_json options = nlohmann::ordered_json::array();
-    for (rules::ChoiceOption o : c->options) options.push_back(name(o));
-    return {{"by", name(c->by)}, {"options", options}};
+    return game::to_json(c);
 }
 
 nlohmann::ordered_json to_json(const rules::Verdict& v) {
-    nlohmann::ordered_json j;
-    j["foul"] = v.foul;
-    nlohmann::ordered_json fouls = nlohmann::ordered_json::array();
-    for (rules::Foul f : v.fouls) fouls.push_back(name(f));
-    j["fouls"] = fouls;
-    j["turn_passes"] = v.turn_passes;
-    j["next_shooter"] = optional_name(v.next_shooter);
-    j["ball_in_hand"] = name(v.ball_in_hand);
-    j["groups"] = groups_json(v.group_a);
-    j["respot"] = nlohmann::ordered_json(v.respot);
-    j["choice"] = to_json(v.choice);
-    j["game_over"] = v.game_over;
-    j["winner"] = optional_name(v.winner);
-    j["break"] = name(v.break_result);
-    j["state"] = to_json(v.state);
-    return j;
+    return game::to_json(v);
 }
 
 }  // namespace cli

@@ -1,0 +1,233 @@
+// `match` (cli-contract.md): plays whole games headlessly between two players and reports the
+// results; with --log, one JSON line per shot. The games are played by game::play_game.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "cli/json_in.hpp"
+#include "cli/json_out.hpp"
+#include "cli/rules_json.hpp"
+#include "cli/shot_output.hpp"
+#include "game/autoplay.hpp"
+#include "game/random_player.hpp"
+#include "game/session.hpp"
+#include "game/state_json.hpp"
+#include "physics/rack.hpp"
+#include "rules/names.hpp"
+
+namespace cli {
+
+namespace {
+
+constexpr std::int64_t max_games = 1'000'000;
+constexpr double max_noise = 100.0;
+
+// The value below which a fraction q of the sorted samples lie (nearest rank).
+double quantile(const std::vector<double>& sorted, double q) {
+    const auto rank = static_cast<std::size_t>(std::ceil(q * static_cast<double>(sorted.size())));
+    return sorted[std::clamp<std::size_t>(rank, 1, sorted.size()) - 1];
+}
+
+// A seed derived from `seed` and a small tag, so that each game and each player draws from its
+// own stream.
+std::uint64_t derive(std::uint64_t seed, std::uint64_t tag) {
+    physics::SplitMix64 mix(seed ^ (0xd1b54a32d192ed03ULL * (tag + 1)));
+    mix.next();
+    return mix.next();
+}
+
+// "random" or "ai:LEVEL" (LEVEL 1–5; not available yet).
+std::string read_player(const std::string& kind) {
+    if (kind == "random") return kind;
+    if (kind.rfind("ai:", 0) == 0) {
+        const std::string level = kind.substr(3);
+        if (level.size() == 1 && level[0] >= '1' && level[0] <= '5')
+            throw BadInput("--players", fmt::format("\"{}\": the AI player is not available yet; "
+                                                    "use \"random\" (e.g. --players random,random)",
+                                                    kind));
+        throw BadInput("--players", fmt::format("\"{}\": the AI levels are ai:1 to ai:5", kind));
+    }
+    throw BadInput(
+        "--players",
+        fmt::format("unknown player \"{}\" (expected \"random\" or \"ai:1\" to \"ai:5\")", kind));
+}
+
+std::array<std::string, 2> read_players(const std::string& text) {
+    const std::size_t comma = text.find(',');
+    if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos)
+        throw BadInput("--players",
+                       fmt::format("\"{}\": expected two players separated by a comma, e.g. "
+                                   "random,random",
+                                   text));
+    return {read_player(text.substr(0, comma)), read_player(text.substr(comma + 1))};
+}
+
+// A whole number from 0 to 2^64 − 1, in decimal.
+std::uint64_t read_seed(const std::string& text) {
+    const bool digits =
+        !text.empty() && text.size() <= 20 &&
+        std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+    std::uint64_t seed = 0;
+    bool fits = digits;
+    for (char c : text) {
+        if (!fits) break;
+        const auto d = static_cast<std::uint64_t>(c - '0');
+        fits = seed <= (UINT64_MAX - d) / 10;
+        seed = seed * 10 + d;
+    }
+    if (!fits)
+        throw BadInput("--seed", fmt::format("\"{}\": expected a whole number from 0 to {}", text,
+                                             UINT64_MAX));
+    return seed;
+}
+
+std::unique_ptr<game::Player> make_player(const std::string& kind, std::uint64_t seed) {
+    (void)kind;  // only "random" exists so far (read_player refuses the others)
+    return std::make_unique<game::RandomPlayer>(seed);
+}
+
+nlohmann::ordered_json log_line(std::int64_t game_index, int shot, const std::string& player,
+                                const game::ShotRecord& r) {
+    nlohmann::ordered_json j;
+    j["game"] = game_index;
+    j["shot"] = shot;
+    j["seat"] = rules::name(r.shooter());
+    j["player"] = player;
+    j["state"] = to_json(r.before);
+    j["stroke"] = game::to_json(r.stroke);
+    j["call"] = game::to_json(r.before.call);
+    j["push_out"] = r.push_out();
+    j["events"] = events_to_json(r.events);
+    j["verdict"] = to_json(r.verdict);
+    j["choice"] =
+        r.choice ? nlohmann::ordered_json(rules::name(*r.choice)) : nlohmann::ordered_json(nullptr);
+    return j;
+}
+
+}  // namespace
+
+nlohmann::ordered_json match_command(const MatchOptions& options) {
+    using clock = std::chrono::steady_clock;
+    const auto start = clock::now();
+
+    std::optional<rules::Game> game = rules::parse<rules::Game>(options.game);
+    if (!game)
+        throw BadInput(
+            "--game",
+            fmt::format("unknown game \"{}\" (expected \"8ball\" or \"9ball\")", options.game));
+    const std::array<std::string, 2> kinds = read_players(options.players);
+    const std::uint64_t seed = read_seed(options.seed);
+    if (options.games < 1 || options.games > max_games)
+        throw BadInput("--games", fmt::format("{} is out of range: must be from 1 to {}",
+                                              options.games, max_games));
+    if (options.duplicate && options.games % 2 != 0)
+        throw BadInput("--games",
+                       fmt::format("{} games with --duplicate: give an even number (each seed is "
+                                   "played twice, the sides swapped)",
+                                   options.games));
+    if (!std::isfinite(options.noise) || options.noise < 0.0 || options.noise > max_noise)
+        throw BadInput("--noise", fmt::format("{} is out of range: must be from 0 to {}",
+                                              options.noise, max_noise));
+    std::ofstream log;
+    if (!options.log.empty()) {
+        log.open(options.log, std::ios::binary | std::ios::trunc);
+        if (!log)
+            throw BadInput("--log", fmt::format("cannot write \"{}\": check the path and its "
+                                                "permissions",
+                                                options.log));
+    }
+
+    // Same kind on both sides: results by seat; else by kind.
+    const bool by_seat = kinds[0] == kinds[1];
+    std::map<std::string, std::int64_t> wins;
+    std::map<std::string, std::vector<double>> decisions;
+    for (int seat = 0; seat < 2; ++seat) {
+        const std::string key = by_seat ? (seat == 0 ? "A" : "B") : kinds[seat];
+        wins[key] = 0;
+        decisions[key];
+    }
+    std::int64_t shots = 0, fouls = 0, break_and_runs = 0, stalemates = 0;
+    nlohmann::ordered_json capped = nlohmann::ordered_json::array();
+
+    for (std::int64_t k = 0; k < options.games; ++k) {
+        const std::int64_t seed_index = options.duplicate ? k / 2 : k;
+        const bool swapped = options.duplicate && k % 2 == 1;
+        const std::uint64_t game_seed = derive(seed, static_cast<std::uint64_t>(seed_index));
+        // who[seat]: the index in --players of the player sitting there.
+        const std::array<int, 2> who = swapped ? std::array{1, 0} : std::array{0, 1};
+        std::array<std::unique_ptr<game::Player>, 2> players;
+        for (int seat = 0; seat < 2; ++seat)
+            players[seat] = make_player(kinds[who[seat]], derive(game_seed, 1 + who[seat]));
+
+        game::Config config;
+        config.game = *game;
+        config.seed = game_seed;
+        config.names = {kinds[who[0]], kinds[who[1]]};
+        config.keep_events = log.is_open();
+        game::Session session(config);
+
+        int shot_number = 0;
+        game::ShotObserver observer;
+        if (log.is_open())
+            observer = [&](const game::Session& s, const game::ShotRecord& r) {
+                nlohmann::ordered_json line = log_line(k, ++shot_number, s.name(r.shooter()), r);
+                log << write_document(line, false);
+            };
+        const game::GameReport report =
+            game::play_game(session, {players[0].get(), players[1].get()}, {}, options.noise,
+                            derive(game_seed, 100), observer);
+
+        shots += report.shots;
+        fouls += report.fouls;
+        stalemates += report.stalemates;
+        if (report.break_and_run) ++break_and_runs;
+        if (report.capped) capped.push_back(k);
+        auto key = [&](int seat) {
+            return by_seat ? std::string(seat == 0 ? "A" : "B") : kinds[who[seat]];
+        };
+        if (report.winner) ++wins[key(static_cast<int>(rules::index(*report.winner)))];
+        for (int seat = 0; seat < 2; ++seat) {
+            std::vector<double>& d = decisions[key(seat)];
+            d.insert(d.end(), report.decision_seconds[seat].begin(),
+                     report.decision_seconds[seat].end());
+        }
+    }
+    if (log.is_open()) {
+        log.flush();
+        if (!log) throw BadInput("--log", fmt::format("cannot write \"{}\"", options.log));
+    }
+
+    nlohmann::ordered_json out;
+    out["game"] = options.game;
+    out["games"] = options.games;
+    out["players"] = kinds;
+    nlohmann::ordered_json wins_json = nlohmann::ordered_json::object();
+    for (const auto& [key, n] : wins) wins_json[key] = n;
+    out["wins"] = std::move(wins_json);
+    out["shots"] = shots;
+    out["fouls"] = fouls;
+    out["break_and_runs"] = break_and_runs;
+    out["stalemates"] = stalemates;
+    out["capped"] = capped.size();
+    out["capped_games"] = std::move(capped);
+    out["seconds"] = std::chrono::duration<double>(clock::now() - start).count();
+    nlohmann::ordered_json decision_json = nlohmann::ordered_json::object();
+    for (auto& [key, times] : decisions) {
+        std::sort(times.begin(), times.end());
+        decision_json[key] = times.empty()
+                                 ? nlohmann::ordered_json{{"median", nullptr}, {"p95", nullptr}}
+                                 : nlohmann::ordered_json{{"median", quantile(times, 0.5)},
+                                                          {"p95", quantile(times, 0.95)}};
+    }
+    out["decision_seconds"] = std::move(decision_json);
+    return out;
+}
+
+}  // namespace cli

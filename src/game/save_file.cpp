@@ -1,0 +1,92 @@
+// Saving and loading a session file. Saving writes a temporary file beside the target and
+// renames it over the target (atomic on POSIX file systems), after checking that the text reads
+// back; loading only reads.
+#include <fmt/format.h>
+
+#include <atomic>
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <system_error>
+
+#include "game/json_field.hpp"
+#include "game/session.hpp"
+
+namespace game {
+
+namespace {
+
+std::filesystem::path temp_beside(const std::filesystem::path& path) {
+    static std::atomic<unsigned> counter{0};
+    const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
+    std::filesystem::path tmp = path;
+    tmp += fmt::format(".tmp-{}-{}", stamp, counter++);
+    return tmp;
+}
+
+// Writes all of `text` to a new file `path`; false (with errno's message in `error`) on failure.
+bool write_new_file(const std::filesystem::path& path, const std::string& text,
+                    std::string& error) {
+    std::FILE* f = std::fopen(path.c_str(), "wbx");
+    if (!f) {
+        error = std::strerror(errno);
+        return false;
+    }
+    const bool written = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+    const int saved_errno = errno;
+    const bool flushed = std::fflush(f) == 0;
+    const bool closed = std::fclose(f) == 0;
+    if (!(written && flushed && closed)) {
+        error = std::strerror(written ? errno : saved_errno);
+        return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+void Session::save_file(const std::filesystem::path& path) const {
+    const std::string text = to_json();
+    try {
+        (void)from_json(text);  // never write a file that would not load
+    } catch (const LoadError& e) {
+        throw std::logic_error(
+            fmt::format("save: the session does not read back ({}); please report this", e.what()));
+    }
+    const std::filesystem::path tmp = temp_beside(path);
+    std::string error;
+    if (!write_new_file(tmp, text, error)) {
+        std::error_code ignored;
+        std::filesystem::remove(tmp, ignored);
+        throw std::runtime_error(fmt::format("cannot save to {}: cannot write {} ({})",
+                                             path.string(), tmp.string(), error));
+    }
+    std::error_code ec;
+    std::filesystem::rename(tmp, path, ec);
+    if (ec) {
+        std::error_code ignored;
+        std::filesystem::remove(tmp, ignored);
+        throw std::runtime_error(fmt::format("cannot save to {}: {}", path.string(), ec.message()));
+    }
+}
+
+Session Session::load_file(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw LoadError(path.string(), "is a directory, not a session file");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw LoadError(path.string(), "cannot open the file: check its name and permissions");
+    std::string text;
+    try {
+        text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    } catch (const std::exception& e) {
+        throw LoadError(path.string(), fmt::format("cannot read the file ({})", e.what()));
+    }
+    if (in.bad()) throw LoadError(path.string(), "cannot read the file");
+    return from_json(text);
+}
+
+}  // namespace game

@@ -1,0 +1,364 @@
+// The session's save format (docs/game.md, "Save format"): Session::to_json and
+// Session::from_json. Reading checks every field and the consistency of the whole.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <string>
+
+#include "game/json_field.hpp"
+#include "game/session.hpp"
+#include "game/state_json.hpp"
+#include "rules/names.hpp"
+
+namespace game {
+
+using nlohmann::ordered_json;
+using rules::name;
+
+namespace {
+
+constexpr std::string_view format_name = "coolaaber-session";
+constexpr std::int64_t format_version = 1;
+constexpr std::size_t max_name_length = 100;
+constexpr std::int64_t max_count = 1'000'000'000;
+
+// ---- Writing
+
+ordered_json table_json(const physics::TableSpec& t) {
+    return {{"length", t.length},
+            {"width", t.width},
+            {"corner_mouth", t.corner_mouth},
+            {"side_mouth", t.side_mouth},
+            {"corner_facing_deg", t.corner_facing_deg},
+            {"side_facing_deg", t.side_facing_deg},
+            {"jaw_nose_radius", t.jaw_nose_radius},
+            {"cushion_height", t.cushion_height},
+            {"corner_shelf", t.corner_shelf},
+            {"side_shelf", t.side_shelf},
+            {"jaw_depth", t.jaw_depth},
+            {"pockets", t.pockets}};
+}
+
+ordered_json params_json(const physics::Params& p) {
+    ordered_json j;
+    j["ball_radius"] = p.ball_radius;
+    j["ball_mass"] = p.ball_mass;
+    j["gravity"] = p.gravity;
+    j["mu_slide"] = p.mu_slide;
+    j["mu_roll"] = p.mu_roll;
+    j["spin_decel"] = p.spin_decel;
+    j["e_ball"] = p.e_ball;
+    j["mu_ball"] = p.mu_ball ? ordered_json(*p.mu_ball) : ordered_json(nullptr);
+    j["e_cushion"] = p.e_cushion;
+    j["mu_cushion"] = p.mu_cushion;
+    j["cue_mass"] = p.cue_mass;
+    j["cue_tip_e"] = p.cue_tip_e;
+    j["cue_endmass"] = p.cue_endmass;
+    j["miscue_limit"] = p.miscue_limit;
+    return j;
+}
+
+ordered_json config_json(const Config& c) {
+    ordered_json j;
+    j["game"] = name(c.game);
+    j["options"] = to_json(c.options);
+    j["table"] = table_json(c.table);
+    j["params"] = params_json(c.params);
+    j["players"] = {{"A", c.names[0]}, {"B", c.names[1]}};
+    j["seed"] = c.seed;
+    j["first_breaker"] = name(c.first_breaker);
+    j["keep_events"] = c.keep_events;
+    return j;
+}
+
+ordered_json pocket_or_null(int pocket) {
+    if (pocket < 0) return nullptr;
+    return physics::pocket_name(pocket);
+}
+
+ordered_json summary_json(const ShotSummary& s) {
+    ordered_json j;
+    j["first_contact"] = s.first_contact ? ordered_json(*s.first_contact) : ordered_json(nullptr);
+    ordered_json down = ordered_json::array();
+    for (const BallDown& d : s.down)
+        down.push_back({{"ball", d.ball}, {"pocket", pocket_or_null(d.pocket)}});
+    j["down"] = std::move(down);
+    j["cushions"] = s.cushions;
+    j["ball_contacts"] = s.ball_contacts;
+    j["events"] = s.events;
+    j["duration"] = s.duration;
+    j["truncated"] = s.truncated;
+    return j;
+}
+
+ordered_json record_json(const ShotRecord& r, bool keep_events) {
+    ordered_json j;
+    j["rack"] = r.rack;
+    j["before"] = to_json(r.before);
+    j["stroke"] = to_json(r.stroke);
+    j["summary"] = summary_json(r.summary);
+    if (keep_events) {
+        ordered_json events = ordered_json::array();
+        for (const physics::Event& e : r.events) events.push_back(to_json(e));
+        j["events"] = std::move(events);
+    }
+    j["verdict"] = to_json(r.verdict);
+    j["choice"] = r.choice ? ordered_json(name(*r.choice)) : ordered_json(nullptr);
+    return j;
+}
+
+// ---- Reading
+
+physics::TableSpec read_table(const Field& f, double ball_radius) {
+    f.expect_object({"length", "width", "corner_mouth", "side_mouth", "corner_facing_deg",
+                     "side_facing_deg", "jaw_nose_radius", "cushion_height", "corner_shelf",
+                     "side_shelf", "jaw_depth", "pockets"});
+    constexpr double max_size = 100.0;  // (unit: m)
+    auto positive = [&](std::string_view key) {
+        Field v = f.at(key);
+        const double x = v.number_in(0.0, max_size);
+        if (!(x > 0.0)) v.fail("must be greater than 0");
+        return x;
+    };
+    auto angle = [&](std::string_view key) {
+        Field v = f.at(key);
+        const double x = v.number_in(0.0, 180.0);
+        if (!(x > 0.0 && x < 180.0)) v.fail("must be between 0 and 180 degrees");
+        return x;
+    };
+    physics::TableSpec t;
+    t.length = positive("length");
+    t.width = positive("width");
+    t.corner_mouth = positive("corner_mouth");
+    t.side_mouth = positive("side_mouth");
+    t.corner_facing_deg = angle("corner_facing_deg");
+    t.side_facing_deg = angle("side_facing_deg");
+    t.jaw_nose_radius = f.at("jaw_nose_radius").number_in(0.0, max_size);
+    t.cushion_height = positive("cushion_height");
+    t.corner_shelf = f.at("corner_shelf").number_in(0.0, max_size);
+    t.side_shelf = f.at("side_shelf").number_in(0.0, max_size);
+    t.jaw_depth = positive("jaw_depth");
+    t.pockets = f.at("pockets").boolean();
+    if (std::optional<std::string> e = physics::validate_table_spec(t, ball_radius)) f.fail(*e);
+    return t;
+}
+
+physics::Params read_params(const Field& f) {
+    f.expect_object({"ball_radius", "ball_mass", "gravity", "mu_slide", "mu_roll", "spin_decel",
+                     "e_ball", "mu_ball", "e_cushion", "mu_cushion", "cue_mass", "cue_tip_e",
+                     "cue_endmass", "miscue_limit"});
+    auto positive_up_to = [&](std::string_view key, double hi) {
+        Field v = f.at(key);
+        const double x = v.number_in(0.0, hi);
+        if (!(x > 0.0)) v.fail("must be greater than 0");
+        return x;
+    };
+    auto in = [&](std::string_view key, double lo, double hi) {
+        return f.at(key).number_in(lo, hi);
+    };
+    physics::Params p;
+    p.ball_radius = positive_up_to("ball_radius", 0.5);
+    p.ball_mass = positive_up_to("ball_mass", 100.0);
+    p.gravity = positive_up_to("gravity", 1000.0);
+    p.mu_slide = in("mu_slide", 0.0, 10.0);
+    p.mu_roll = in("mu_roll", 0.0, 10.0);
+    p.spin_decel = positive_up_to("spin_decel", 10000.0);
+    p.e_ball = in("e_ball", 0.0, 1.0);
+    if (Field mu = f.at("mu_ball"); !mu.is_null()) p.mu_ball = mu.number_in(0.0, 10.0);
+    p.e_cushion = in("e_cushion", 0.0, 1.0);
+    p.mu_cushion = in("mu_cushion", 0.0, 10.0);
+    p.cue_mass = positive_up_to("cue_mass", 100.0);
+    p.cue_tip_e = in("cue_tip_e", 0.0, 1.0);
+    p.cue_endmass = positive_up_to("cue_endmass", 100.0);
+    p.miscue_limit = positive_up_to("miscue_limit", 1.0);
+    return p;
+}
+
+Config read_config(const Field& f) {
+    f.expect_object(
+        {"game", "options", "table", "params", "players", "seed", "first_breaker", "keep_events"});
+    Config c;
+    c.game = f.at("game").name_of<rules::Game>();
+    c.options = read_options(f.at("options"));
+    c.params = read_params(f.at("params"));
+    c.table = read_table(f.at("table"), c.params.ball_radius);
+    Field players = f.at("players");
+    players.expect_object({"A", "B"});
+    for (rules::Player p : {rules::Player::A, rules::Player::B}) {
+        Field n = players.at(name(p));
+        std::string s = n.string();
+        if (s.empty() || s.size() > max_name_length)
+            n.fail(fmt::format("a player's name has 1 to {} bytes", max_name_length));
+        c.names[rules::index(p)] = std::move(s);
+    }
+    c.seed = f.at("seed").unsigned_integer();
+    c.first_breaker = f.at("first_breaker").name_of<rules::Player>();
+    c.keep_events = f.at("keep_events").boolean();
+    return c;
+}
+
+int read_optional_pocket(const Field& f) {
+    return f.is_null() ? -1 : read_pocket(f);
+}
+
+ShotSummary read_summary(const Field& f, rules::Game game) {
+    f.expect_object(
+        {"first_contact", "down", "cushions", "ball_contacts", "events", "duration", "truncated"});
+    ShotSummary s;
+    const int highest = rules::highest_ball(game);
+    if (Field fc = f.at("first_contact"); !fc.is_null())
+        s.first_contact = static_cast<int>(fc.integer_in(1, highest));
+    Field down = f.at("down");
+    for (std::size_t i = 0; i < down.array_size(); ++i) {
+        Field d = down.at(i);
+        d.expect_object({"ball", "pocket"});
+        const int ball = static_cast<int>(d.at("ball").integer_in(0, highest));
+        for (const BallDown& earlier : s.down)
+            if (earlier.ball == ball)
+                d.at("ball").fail(fmt::format("ball {} is listed twice", ball));
+        s.down.push_back({ball, read_optional_pocket(d.at("pocket"))});
+    }
+    s.cushions = static_cast<int>(f.at("cushions").integer_in(0, max_count));
+    s.ball_contacts = static_cast<int>(f.at("ball_contacts").integer_in(0, max_count));
+    s.events = static_cast<int>(f.at("events").integer_in(0, max_count));
+    s.duration = f.at("duration").number_in(0.0, 1e9);
+    s.truncated = f.at("truncated").boolean();
+    return s;
+}
+
+ShotRecord read_record(const Field& f, const TableContext& t, bool keep_events, int rack_number) {
+    if (keep_events)
+        f.expect_object({"rack", "before", "stroke", "summary", "events", "verdict", "choice"});
+    else
+        f.expect_object({"rack", "before", "stroke", "summary", "verdict", "choice"});
+    ShotRecord r;
+    r.rack = static_cast<int>(f.at("rack").integer_in(0, rack_number));
+    r.before = read_state(f.at("before"), t);
+    if (!r.before.positions.count(0))
+        f.at("before")
+            .at("positions")
+            .fail("the cue ball has no position: a shot was played from here");
+    r.stroke = read_stroke(f.at("stroke"));
+    r.summary = read_summary(f.at("summary"), t.game);
+    if (keep_events) {
+        Field events = f.at("events");
+        for (std::size_t i = 0; i < events.array_size(); ++i)
+            r.events.push_back(read_event(events.at(i), t.game));
+    }
+    r.verdict = read_verdict(f.at("verdict"), t);
+    if (Field c = f.at("choice"); !c.is_null()) {
+        const rules::ChoiceOption o = c.name_of<rules::ChoiceOption>();
+        const auto& offered = r.verdict.choice;
+        if (!offered || std::find(offered->options.begin(), offered->options.end(), o) ==
+                            offered->options.end())
+            c.fail(fmt::format("\"{}\" was not offered by the verdict's choice", name(o)));
+        r.choice = o;
+    }
+    return r;
+}
+
+}  // namespace
+
+std::string Session::to_json() const {
+    ordered_json j;
+    j["format"] = format_name;
+    j["version"] = format_version;
+    j["config"] = config_json(config_);
+    j["game_number"] = game_number_;
+    j["rack_number"] = rack_number_;
+    j["score"] = {{"A", score_[0]}, {"B", score_[1]}};
+    j["state"] = game::to_json(state_);
+    j["pending"] = pending_ ? game::to_json(*pending_) : ordered_json(nullptr);
+    j["winner"] = winner_ ? ordered_json(rules::name(*winner_)) : ordered_json(nullptr);
+    ordered_json pocketed = ordered_json::array();
+    for (const Pocketed& p : pocketed_)
+        pocketed.push_back(
+            {{"ball", p.ball}, {"pocket", pocket_or_null(p.pocket)}, {"by", rules::name(p.by)}});
+    j["pocketed"] = std::move(pocketed);
+    ordered_json history = ordered_json::array();
+    for (const ShotRecord& r : history_) history.push_back(record_json(r, config_.keep_events));
+    j["history"] = std::move(history);
+    return j.dump() + "\n";
+}
+
+Session Session::from_json(const std::string& text) {
+    const nlohmann::json doc = parse_save_document(text, "session");
+    const Field root(doc, "session");
+    if (!doc.is_object()) root.fail("not a Coolaaber session: expected a JSON object");
+    {
+        std::optional<Field> format = root.find("format");
+        if (!format || !format->raw().is_string() || format->string() != format_name)
+            throw LoadError(
+                "session.format",
+                fmt::format("not a Coolaaber session file (expected \"format\": \"{}\")",
+                            format_name));
+        Field version = root.at("version");
+        if (version.integer_in(1, 1000000) != format_version)
+            version.fail(fmt::format("version {} is not supported (this build reads version {})",
+                                     version.raw().dump(), format_version));
+    }
+    root.expect_object({"format", "version", "config", "game_number", "rack_number", "score",
+                        "state", "pending", "winner", "pocketed", "history"});
+
+    Config config = read_config(root.at("config"));
+    Session s(std::move(config), Restored{});
+    const TableContext t{s.config_.game, s.table_, s.config_.params};
+    s.game_number_ = static_cast<int>(root.at("game_number").integer_in(0, max_count));
+    s.rack_number_ = static_cast<int>(root.at("rack_number").integer_in(0, max_count));
+    Field score = root.at("score");
+    score.expect_object({"A", "B"});
+    for (rules::Player p : {rules::Player::A, rules::Player::B})
+        s.score_[rules::index(p)] =
+            static_cast<int>(score.at(rules::name(p)).integer_in(0, max_count));
+
+    if (Field w = root.at("winner"); !w.is_null()) s.winner_ = w.name_of<rules::Player>();
+    s.state_ = read_state(root.at("state"), t, s.winner_.has_value());
+
+    if (Field p = root.at("pending"); !p.is_null()) {
+        if (s.winner_) p.fail("must be null: the game is over");
+        rules::Verdict v = read_verdict(p, t);
+        if (!v.choice) p.at("choice").fail("a pending verdict offers a choice");
+        if (game::to_json(v.state) != game::to_json(s.state_))
+            p.at("state").fail(
+                "differs from session.state (a pending choice shows the table as it lies)");
+        s.pending_ = std::move(v);
+    }
+
+    Field pocketed = root.at("pocketed");
+    for (std::size_t i = 0; i < pocketed.array_size(); ++i) {
+        Field item = pocketed.at(i);
+        item.expect_object({"ball", "pocket", "by"});
+        Field ball = item.at("ball");
+        const int id = static_cast<int>(ball.integer_in(-1000, 1000));
+        if (id < 1 || id > rules::highest_ball(t.game))
+            ball.fail(fmt::format("ball {} does not exist (the object balls of {} are 1 to {})", id,
+                                  rules::name(t.game), rules::highest_ball(t.game)));
+        if (s.state_.has(id))
+            ball.fail(fmt::format("ball {} is also on the table (session.state.on_table)", id));
+        for (const Pocketed& earlier : s.pocketed_)
+            if (earlier.ball == id) ball.fail(fmt::format("ball {} is listed twice", id));
+        s.pocketed_.push_back(
+            {id, read_optional_pocket(item.at("pocket")), item.at("by").name_of<rules::Player>()});
+    }
+    for (int id = 1; id <= rules::highest_ball(t.game); ++id) {
+        const bool down = std::any_of(s.pocketed_.begin(), s.pocketed_.end(),
+                                      [id](const Pocketed& p) { return p.ball == id; });
+        if (!down && !s.state_.has(id))
+            pocketed.fail(fmt::format("ball {} is neither on the table nor pocketed", id));
+    }
+
+    Field history = root.at("history");
+    for (std::size_t i = 0; i < history.array_size(); ++i)
+        s.history_.push_back(read_record(history.at(i), t, s.config_.keep_events, s.rack_number_));
+    for (std::size_t i = 0; i + 1 < s.history_.size(); ++i)
+        if (s.history_[i].verdict.game_over)
+            history.at(i).at("verdict").fail("the game ended here, yet more shots follow");
+    if (s.winner_ && (s.history_.empty() || !s.history_.back().verdict.game_over))
+        root.at("winner").fail("the game is over, but the last shot of the history did not end it");
+    if (s.pending_ &&
+        (s.history_.empty() || !s.history_.back().verdict.choice || s.history_.back().choice))
+        root.at("pending").fail("the last shot of the history offers no open choice");
+    return s;
+}
+
+}  // namespace game

@@ -1,0 +1,522 @@
+#include "game/state_json.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "physics/layout.hpp"
+#include "rules/names.hpp"
+
+namespace game {
+
+using nlohmann::ordered_json;
+using rules::name;
+
+namespace {
+
+constexpr std::int64_t max_fouls_in_row = 1000;
+
+ordered_json groups_json(const std::optional<rules::Group>& group_a) {
+    if (!group_a) return nullptr;
+    return {{"A", name(*group_a)}, {"B", name(rules::other(*group_a))}};
+}
+
+template <typename E>
+ordered_json optional_name(const std::optional<E>& e) {
+    if (!e) return nullptr;
+    return name(*e);
+}
+
+int key_ball(rules::Game game) {
+    return game == rules::Game::eight_ball ? 8 : 9;
+}
+
+/// An object ball of the game (or the cue ball, when `cue_ok`).
+int read_ball(const Field& f, rules::Game game, bool cue_ok) {
+    const int highest = rules::highest_ball(game);
+    const int id = static_cast<int>(f.integer_in(-1000, 1000));
+    if (id < (cue_ok ? 0 : 1) || id > highest) {
+        if (id == 0) f.fail("the cue ball (0) is not allowed here: an object ball is expected");
+        f.fail(fmt::format("ball {} does not exist (the balls of {} are {} to {})", id, name(game),
+                           cue_ok ? 0 : 1, highest));
+    }
+    return id;
+}
+
+std::optional<rules::Player> read_optional_player(const Field& f) {
+    if (f.is_null()) return std::nullopt;
+    return f.name_of<rules::Player>();
+}
+
+std::optional<rules::Group> read_groups(const Field& f) {
+    if (f.is_null()) return std::nullopt;
+    f.expect_object({"A", "B"});
+    const rules::Group a = f.at("A").name_of<rules::Group>();
+    const rules::Group b = f.at("B").name_of<rules::Group>();
+    if (a == b) f.fail("the players must have different groups, or null for an open table");
+    return a;
+}
+
+template <typename Read>
+auto read_per_player(const Field& f, Read read) {
+    f.expect_object({"A", "B"});
+    return std::array{read(f.at("A")), read(f.at("B"))};
+}
+
+std::set<int> read_on_table(const Field& f, rules::Game game, bool finished) {
+    std::set<int> ids;
+    for (std::size_t i = 0; i < f.array_size(); ++i) {
+        Field item = f.at(i);
+        if (item.raw().is_number_integer() && item.raw().get<std::int64_t>() == 0)
+            item.fail("the cue ball is not listed here: `cue_ball` says where it is");
+        const int id = read_ball(item, game, false);
+        if (!ids.insert(id).second) item.fail(fmt::format("ball {} is listed twice", id));
+    }
+    if (!finished && !ids.count(key_ball(game)))
+        f.fail(fmt::format("the {} must be on the table while the game is on", key_ball(game)));
+    return ids;
+}
+
+rules::Call read_call(const Field& f, rules::Game game, const rules::GameState& s) {
+    if (f.is_null()) return rules::Call::nothing();
+    if (game == rules::Game::nine_ball) f.fail("9-ball has no calls: use null");
+    if (s.shot == rules::Shot::break_shot) f.fail("nothing is called on the break: use null");
+    if (f.raw().is_string()) {
+        if (f.string() != "safety")
+            f.fail(fmt::format(
+                "unknown call \"{}\" (expected null, \"safety\" or {{\"ball\": 5, \"pocket\": "
+                "\"N\"}})",
+                f.string()));
+        return rules::Call::safety();
+    }
+    f.expect_object({"ball", "pocket"});
+    Field ball = f.at("ball");
+    const int id = read_ball(ball, game, false);
+    if (!s.has(id)) ball.fail(fmt::format("ball {} is not on the table", id));
+    if (id == 8 && !rules::on_the_eight(s))
+        ball.fail("the 8 can be called only once the shooter's group is cleared");
+    return rules::Call::ball_in(id, read_pocket(f.at("pocket")));
+}
+
+std::optional<int> id_from_key(const std::string& key) {
+    if (key.empty() || key.size() > 2) return std::nullopt;
+    if (!std::all_of(key.begin(), key.end(), [](char c) { return c >= '0' && c <= '9'; }))
+        return std::nullopt;
+    if (key.size() == 2 && key[0] == '0') return std::nullopt;
+    return std::stoi(key);
+}
+
+std::map<int, physics::Vec2> read_positions(const Field& f, const TableContext& t,
+                                            const rules::GameState& s) {
+    if (!f.raw().is_object())
+        f.fail("expected an object of positions by ball id, e.g. {\"0\": [0.5, 0.6]}");
+    std::map<int, physics::Vec2> positions;
+    std::vector<physics::BallState> balls;
+    std::vector<std::string> keys;
+    for (const auto& [key, value] : f.raw().items()) {
+        Field item = f.at(std::string_view(key));
+        std::optional<int> id = id_from_key(key);
+        if (!id || *id > rules::highest_ball(t.game))
+            item.fail(fmt::format("unknown ball \"{}\": the balls of {} are \"0\" to \"{}\"", key,
+                                  name(t.game), rules::highest_ball(t.game)));
+        if (*id != 0 && !s.has(*id)) item.fail(fmt::format("ball {} is not on the table", *id));
+        const physics::Vec2 p = read_vec2(item);
+        positions[*id] = p;
+        physics::BallState b;
+        b.id = *id;
+        b.pos = p;
+        balls.push_back(b);
+        keys.push_back(key);
+    }
+    for (int id : s.on_table)
+        if (!positions.count(id))
+            f.fail(fmt::format("ball {} is on the table but has no position", id));
+    if (s.cue_ball == rules::CueBall::on_table && !positions.count(0))
+        f.fail("the cue ball is on the table but has no position (\"0\")");
+    if (std::optional<physics::LayoutError> e = physics::validate_layout(t.table, t.params, balls))
+        throw LoadError(f.path() + "." + keys[e->index], e->message);
+    auto cue = positions.find(0);
+    const double head_string = t.table.length() / 4.0;
+    if (cue != positions.end() && s.cue_ball == rules::CueBall::in_hand_kitchen &&
+        !(cue->second.x < head_string))
+        throw LoadError(f.path() + ".0",
+                        fmt::format("the cue ball is in hand in the kitchen: it must lie behind "
+                                    "the head string (x < {})",
+                                    head_string));
+    return positions;
+}
+
+std::optional<rules::Choice> read_choice(const Field& f) {
+    if (f.is_null()) return std::nullopt;
+    f.expect_object({"by", "options"});
+    rules::Choice c;
+    c.by = f.at("by").name_of<rules::Player>();
+    Field options = f.at("options");
+    if (options.array_size() == 0) options.fail("a choice offers at least one option");
+    for (std::size_t i = 0; i < options.array_size(); ++i) {
+        const rules::ChoiceOption o = options.at(i).name_of<rules::ChoiceOption>();
+        if (std::find(c.options.begin(), c.options.end(), o) != c.options.end())
+            options.at(i).fail(fmt::format("\"{}\" is listed twice", name(o)));
+        c.options.push_back(o);
+    }
+    return c;
+}
+
+physics::EventType read_event_type(const Field& f) {
+    const std::string t = f.string();
+    for (int k = 0; k <= static_cast<int>(physics::EventType::off_table); ++k) {
+        const auto type = static_cast<physics::EventType>(k);
+        if (physics::to_string(type) == t) return type;
+    }
+    f.fail(fmt::format(
+        "unknown event type \"{}\" (expected one of \"strike\", \"miscue\", \"transition\", "
+        "\"ball_ball\", \"cushion\", \"pocket\", \"off_table\")",
+        t));
+}
+
+physics::Motion read_motion(const Field& f) {
+    if (std::optional<physics::Motion> m = physics::motion_from_string(f.string())) return *m;
+    f.fail(
+        fmt::format("unknown motion state \"{}\" (expected one of \"stationary\", \"spinning\", "
+                    "\"sliding\", \"rolling\", \"pocketed\")",
+                    f.string()));
+}
+
+int read_rail(const Field& f) {
+    const std::string s = f.string();
+    for (int r = 0; r < 6; ++r)
+        if (physics::rail_name(r) == s) return r;
+    f.fail(fmt::format(
+        "unknown cushion \"{}\" (expected one of \"W\", \"E\", \"SW-S\", \"S-SE\", \"NW-N\", "
+        "\"N-NE\")",
+        s));
+}
+
+}  // namespace
+
+// ---- Writing
+
+ordered_json to_json(physics::Vec2 v) {
+    return ordered_json::array({v.x, v.y});
+}
+
+ordered_json to_json(physics::Vec3 v) {
+    return ordered_json::array({v.x, v.y, v.z});
+}
+
+ordered_json to_json(const rules::Call& c) {
+    switch (c.kind) {
+        case rules::Call::Kind::none:
+            return nullptr;
+        case rules::Call::Kind::safety:
+            return "safety";
+        case rules::Call::Kind::ball:
+            break;
+    }
+    return {{"ball", c.ball}, {"pocket", physics::pocket_name(c.pocket)}};
+}
+
+ordered_json to_json(const rules::GameState& s) {
+    ordered_json j;
+    j["shooter"] = name(s.shooter);
+    j["breaker"] = name(s.breaker);
+    j["shot"] = name(s.shot);
+    j["groups"] = groups_json(s.group_a);
+    j["on_table"] = s.on_table;
+    j["cue_ball"] = name(s.cue_ball);
+    j["call"] = to_json(s.call);
+    j["fouls_in_row"] = {{"A", s.fouls_in_row[0]}, {"B", s.fouls_in_row[1]}};
+    j["warned"] = {{"A", s.warned[0]}, {"B", s.warned[1]}};
+    ordered_json positions = ordered_json::object();
+    for (const auto& [id, p] : s.positions) positions[std::to_string(id)] = to_json(p);
+    j["positions"] = std::move(positions);
+    return j;
+}
+
+ordered_json to_json(const rules::Options& o) {
+    return {{"call_shots", name(o.call_shots)},
+            {"eight_on_break", name(o.eight_on_break)},
+            {"foul_ball_in_hand", name(o.foul_ball_in_hand)},
+            {"scratch_on_eight_loses", o.scratch_on_eight_loses},
+            {"groups_on_break", o.groups_on_break},
+            {"rail_after_contact", o.rail_after_contact}};
+}
+
+ordered_json to_json(const std::optional<rules::Choice>& c) {
+    if (!c) return nullptr;
+    ordered_json options = ordered_json::array();
+    for (rules::ChoiceOption o : c->options) options.push_back(name(o));
+    return {{"by", name(c->by)}, {"options", std::move(options)}};
+}
+
+ordered_json to_json(const rules::Verdict& v) {
+    ordered_json j;
+    j["foul"] = v.foul;
+    ordered_json fouls = ordered_json::array();
+    for (rules::Foul f : v.fouls) fouls.push_back(name(f));
+    j["fouls"] = std::move(fouls);
+    j["turn_passes"] = v.turn_passes;
+    j["next_shooter"] = optional_name(v.next_shooter);
+    j["ball_in_hand"] = name(v.ball_in_hand);
+    j["groups"] = groups_json(v.group_a);
+    j["respot"] = ordered_json(v.respot);
+    j["choice"] = to_json(v.choice);
+    j["game_over"] = v.game_over;
+    j["winner"] = optional_name(v.winner);
+    j["break"] = name(v.break_result);
+    j["state"] = to_json(v.state);
+    return j;
+}
+
+ordered_json to_json(const physics::Stroke& s) {
+    return {{"speed", s.speed},
+            {"heading_deg", s.heading_deg},
+            {"side", s.side},
+            {"top", s.top},
+            {"elevation_deg", s.elevation_deg}};
+}
+
+ordered_json to_json(const physics::Event& event) {
+    using physics::EventType;
+    ordered_json e;
+    e["time"] = event.time;
+    e["type"] = std::string(physics::to_string(event.type));
+    ordered_json ids = ordered_json::array();
+    for (int k = 0; k < event.ball_count; ++k) ids.push_back(event.ball(k));
+    e["balls"] = std::move(ids);
+    switch (event.type) {
+        case EventType::transition:
+            e["from"] = std::string(physics::to_string(event.from));
+            e["to"] = std::string(physics::to_string(event.to));
+            break;
+        case EventType::ball_ball:
+            e["speed"] = event.speed;
+            break;
+        case EventType::cushion:
+            e["speed"] = event.speed;
+            if (event.rail >= 0)
+                e["cushion"] = std::string(physics::rail_name(event.rail));
+            else
+                e["pocket_jaw"] = std::string(physics::pocket_name(event.pocket));
+            break;
+        case EventType::pocket:
+            e["pocket"] = std::string(physics::pocket_name(event.pocket));
+            break;
+        case EventType::strike:
+        case EventType::miscue:
+        case EventType::off_table:
+            break;
+    }
+    ordered_json pos = ordered_json::array(), vel = ordered_json::array(),
+                 spin = ordered_json::array();
+    for (std::size_t k = 0; k < event.ball_count; ++k) {
+        pos.push_back(to_json(event.balls[k].pos));
+        vel.push_back(to_json(event.balls[k].vel));
+        spin.push_back(to_json(event.balls[k].spin));
+    }
+    e["pos"] = std::move(pos);
+    e["vel"] = std::move(vel);
+    e["spin"] = std::move(spin);
+    return e;
+}
+
+// ---- Reading
+
+physics::Vec2 read_vec2(const Field& f) {
+    if (f.array_size() != 2) f.fail("expected [x, y]: an array of 2 numbers");
+    return {f.at(std::size_t{0}).number(), f.at(std::size_t{1}).number()};
+}
+
+physics::Vec3 read_vec3(const Field& f) {
+    if (f.array_size() != 3) f.fail("expected [x, y, z]: an array of 3 numbers");
+    return {f.at(std::size_t{0}).number(), f.at(std::size_t{1}).number(),
+            f.at(std::size_t{2}).number()};
+}
+
+int read_pocket(const Field& f) {
+    const std::string s = f.string();
+    if (std::optional<int> p = physics::pocket_from_name(s)) return *p;
+    f.fail(fmt::format(
+        "unknown pocket \"{}\" (expected one of \"SW\", \"S\", \"SE\", \"NW\", \"N\", \"NE\")", s));
+}
+
+rules::Options read_options(const Field& f) {
+    f.expect_object({"call_shots", "eight_on_break", "foul_ball_in_hand", "scratch_on_eight_loses",
+                     "groups_on_break", "rail_after_contact"});
+    rules::Options o;
+    o.call_shots = f.at("call_shots").name_of<rules::CallShots>();
+    o.eight_on_break = f.at("eight_on_break").name_of<rules::EightOnBreak>();
+    o.foul_ball_in_hand = f.at("foul_ball_in_hand").name_of<rules::FoulBallInHand>();
+    o.scratch_on_eight_loses = f.at("scratch_on_eight_loses").boolean();
+    o.groups_on_break = f.at("groups_on_break").boolean();
+    o.rail_after_contact = f.at("rail_after_contact").boolean();
+    return o;
+}
+
+namespace {
+
+rules::GameState read_state_impl(const Field& f, const TableContext& t, bool finished) {
+    using rules::Shot;
+    f.expect_object({"shooter", "breaker", "shot", "groups", "on_table", "cue_ball", "call",
+                     "fouls_in_row", "warned", "positions"});
+    rules::GameState s;
+    s.shooter = f.at("shooter").name_of<rules::Player>();
+    s.breaker = f.at("breaker").name_of<rules::Player>();
+    Field shot = f.at("shot");
+    s.shot = shot.name_of<Shot>();
+    s.on_table = read_on_table(f.at("on_table"), t.game, finished);
+    Field cue = f.at("cue_ball");
+    s.cue_ball = cue.name_of<rules::CueBall>();
+    if ((s.shot == Shot::push_out || s.shot == Shot::after_push_out) &&
+        t.game == rules::Game::eight_ball)
+        shot.fail("a push-out is a 9-ball rule: 8-ball has none");
+    if (s.shot == Shot::push_out && s.cue_ball != rules::CueBall::on_table)
+        shot.fail("a push-out is played with the cue ball where it lies (cue_ball \"on_table\")");
+    if (s.shot == Shot::break_shot && s.cue_ball != rules::CueBall::in_hand_kitchen)
+        cue.fail("on the break the cue ball is in hand in the kitchen: \"in_hand_kitchen\"");
+    Field groups = f.at("groups");
+    s.group_a = read_groups(groups);
+    if (s.group_a && t.game == rules::Game::nine_ball)
+        groups.fail("9-ball has no groups: use null");
+    if (s.group_a && s.shot == Shot::break_shot)
+        groups.fail("the table is open on the break: use null");
+    s.fouls_in_row = read_per_player(f.at("fouls_in_row"), [](const Field& v) {
+        return static_cast<int>(v.integer_in(0, max_fouls_in_row));
+    });
+    s.warned = read_per_player(f.at("warned"), [](const Field& v) { return v.boolean(); });
+    s.call = read_call(f.at("call"), t.game, s);
+    s.positions = read_positions(f.at("positions"), t, s);
+    return s;
+}
+
+}  // namespace
+
+rules::GameState read_state(const Field& f, const TableContext& t, bool finished) {
+    return read_state_impl(f, t, finished);
+}
+
+rules::Verdict read_verdict(const Field& f, const TableContext& t) {
+    f.expect_object({"foul", "fouls", "turn_passes", "next_shooter", "ball_in_hand", "groups",
+                     "respot", "choice", "game_over", "winner", "break", "state"});
+    rules::Verdict v;
+    v.foul = f.at("foul").boolean();
+    Field fouls = f.at("fouls");
+    for (std::size_t i = 0; i < fouls.array_size(); ++i) {
+        const rules::Foul foul = fouls.at(i).name_of<rules::Foul>();
+        if (!v.fouls.empty() && !(v.fouls.back() < foul))
+            fouls.at(i).fail("fouls are listed once each, in the canonical order");
+        v.fouls.push_back(foul);
+    }
+    if (v.foul != !v.fouls.empty())
+        f.at("foul").fail("must be true exactly when `fouls` lists a foul");
+    v.turn_passes = f.at("turn_passes").boolean();
+    v.next_shooter = read_optional_player(f.at("next_shooter"));
+    v.ball_in_hand = f.at("ball_in_hand").name_of<rules::BallInHand>();
+    v.group_a = read_groups(f.at("groups"));
+    v.choice = read_choice(f.at("choice"));
+    v.game_over = f.at("game_over").boolean();
+    v.winner = read_optional_player(f.at("winner"));
+    v.break_result = f.at("break").name_of<rules::BreakResult>();
+    v.state = read_state_impl(f.at("state"), t, v.game_over);
+    Field respot = f.at("respot");
+    for (std::size_t i = 0; i < respot.array_size(); ++i) {
+        const int id = read_ball(respot.at(i), t.game, false);
+        if (!v.state.has(id))
+            respot.at(i).fail(fmt::format("ball {} is not on the table (state.on_table)", id));
+        v.respot.push_back(id);
+    }
+
+    if (v.game_over != v.winner.has_value())
+        f.at("winner").fail("a winner is named exactly when the game is over");
+    if (v.game_over && v.choice) f.at("choice").fail("no choice is offered when the game is over");
+    const bool someone_shoots = !v.game_over && !v.choice;
+    if (someone_shoots != v.next_shooter.has_value())
+        f.at("next_shooter")
+            .fail(
+                "names the next shooter exactly when no choice is pending and the game is not "
+                "over");
+    if (v.next_shooter && *v.next_shooter != v.state.shooter)
+        f.at("next_shooter").fail("differs from state.shooter");
+    if (v.group_a != v.state.group_a) f.at("groups").fail("differs from state.groups");
+    return v;
+}
+
+physics::Stroke read_stroke(const Field& f) {
+    f.expect_object({"speed", "heading_deg", "side", "top", "elevation_deg"});
+    physics::Stroke s;
+    s.speed = f.at("speed").number_in(0.0, 20.0);
+    s.heading_deg = f.at("heading_deg").number_in(-3600.0, 3600.0);
+    s.side = f.at("side").number_in(-1.0, 1.0);
+    s.top = f.at("top").number_in(-1.0, 1.0);
+    s.elevation_deg = f.at("elevation_deg").number_in(0.0, 90.0);
+    return s;
+}
+
+physics::Event read_event(const Field& f, rules::Game game) {
+    using physics::EventType;
+    f.expect_object({"time", "type", "balls", "pos", "vel", "spin"},
+                    {"speed", "cushion", "pocket_jaw", "pocket", "from", "to"});
+    physics::Event e;
+    e.time = f.at("time").number_in(0.0, 1e9);
+    e.type = read_event_type(f.at("type"));
+    const std::size_t count = e.type == EventType::ball_ball ? 2 : 1;
+    Field balls = f.at("balls");
+    if (balls.array_size() != count)
+        balls.fail(fmt::format("a {} event has {} ball{}", physics::to_string(e.type), count,
+                               count == 1 ? "" : "s"));
+    e.ball_count = static_cast<std::uint8_t>(count);
+    for (std::size_t k = 0; k < count; ++k) e.balls[k].id = read_ball(balls.at(k), game, true);
+    if (count == 2 && e.balls[0].id == e.balls[1].id) balls.fail("two different balls collide");
+
+    auto per_ball = [&](std::string_view key, auto read) {
+        Field list = f.at(key);
+        if (list.array_size() != count)
+            list.fail(
+                fmt::format("expected {} entr{}, one per ball", count, count == 1 ? "y" : "ies"));
+        for (std::size_t k = 0; k < count; ++k) read(k, list.at(k));
+    };
+    per_ball("pos", [&](std::size_t k, const Field& v) { e.balls[k].pos = read_vec2(v); });
+    per_ball("vel", [&](std::size_t k, const Field& v) { e.balls[k].vel = read_vec2(v); });
+    per_ball("spin", [&](std::size_t k, const Field& v) { e.balls[k].spin = read_vec3(v); });
+
+    // The type's own fields, and no other.
+    std::vector<std::string_view> own;
+    switch (e.type) {
+        case EventType::transition:
+            own = {"from", "to"};
+            e.from = read_motion(f.at("from"));
+            e.to = read_motion(f.at("to"));
+            break;
+        case EventType::ball_ball:
+            own = {"speed"};
+            e.speed = f.at("speed").number_in(0.0, 1e6);
+            break;
+        case EventType::cushion:
+            e.speed = f.at("speed").number_in(0.0, 1e6);
+            if (f.find("cushion")) {
+                own = {"speed", "cushion"};
+                e.rail = read_rail(f.at("cushion"));
+            } else {
+                own = {"speed", "pocket_jaw"};
+                e.pocket = read_pocket(f.at("pocket_jaw"));
+            }
+            break;
+        case EventType::pocket:
+            own = {"pocket"};
+            e.pocket = read_pocket(f.at("pocket"));
+            break;
+        case EventType::strike:
+        case EventType::miscue:
+        case EventType::off_table:
+            break;
+    }
+    for (std::string_view key : {"speed", "cushion", "pocket_jaw", "pocket", "from", "to"})
+        if (f.find(key) && std::find(own.begin(), own.end(), key) == own.end())
+            f.at(key).fail(fmt::format("a {} event has no `{}`", physics::to_string(e.type), key));
+    return e;
+}
+
+}  // namespace game
