@@ -1,0 +1,461 @@
+#include "render/renderer.hpp"
+
+#include <epoxy/gl.h>
+
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "render/shaders.hpp"
+#include "render/table_mesh.hpp"
+#include "render/textures.hpp"
+
+namespace render {
+
+namespace {
+
+constexpr std::array<glm::vec3, 8> kColours = {{
+    {0.95f, 0.94f, 0.89f},  // cue ball
+    {0.98f, 0.76f, 0.04f},  // 1 yellow
+    {0.04f, 0.18f, 0.68f},  // 2 blue
+    {0.84f, 0.06f, 0.05f},  // 3 red
+    {0.33f, 0.10f, 0.52f},  // 4 purple
+    {1.00f, 0.40f, 0.04f},  // 5 orange
+    {0.02f, 0.44f, 0.19f},  // 6 green
+    {0.48f, 0.07f, 0.07f},  // 7 maroon
+}};
+constexpr glm::vec3 kBlack{0.03f, 0.03f, 0.03f};
+constexpr glm::vec3 kClothColour{0.12f, 0.44f, 0.25f};   // sRGB: a tournament green
+constexpr glm::vec3 kBackground{0.005f, 0.0045f, 0.005f};  // linear
+
+struct Mesh {
+    GLuint vao = 0, vbo = 0;
+    GLsizei count = 0;
+};
+
+Mesh upload(const std::vector<Vertex>& v) {
+    Mesh m;
+    glGenVertexArrays(1, &m.vao);
+    glGenBuffers(1, &m.vbo);
+    glBindVertexArray(m.vao);
+    glBindBuffer(GL_ARRAY_BUFFER, m.vbo);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(v.size() * sizeof(Vertex)), v.data(), GL_STATIC_DRAW);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, pos)));
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, normal)));
+    glEnableVertexAttribArray(2);
+    glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, uv)));
+    m.count = static_cast<GLsizei>(v.size());
+    return m;
+}
+
+GLuint upload_texture(const TextureData& t) {
+    GLuint tex = 0;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    const GLenum format = t.channels == 1 ? GL_RED : GL_RGB;
+    const GLint internal = t.channels == 1 ? GL_R8 : GL_RGB8;
+    glTexImage2D(GL_TEXTURE_2D, 0, internal, t.width, t.height, 0, format, GL_UNSIGNED_BYTE, t.pixels.data());
+    glGenerateMipmap(GL_TEXTURE_2D);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    return tex;
+}
+
+/// Vertex of the cue stick and aim guide.
+struct SolidVertex {
+    glm::vec3 pos, normal, colour;
+};
+
+/// A tapered cylinder from a (radius ra) to b (radius rb), colour per end.
+void add_lathe(std::vector<SolidVertex>& out, glm::vec3 a, glm::vec3 b, float ra, float rb, glm::vec3 ca,
+               glm::vec3 cb, int sides) {
+    const glm::vec3 axis = glm::normalize(b - a);
+    const glm::vec3 helper = std::abs(axis.z) < 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0);
+    const glm::vec3 u = glm::normalize(glm::cross(axis, helper)), v = glm::cross(axis, u);
+    for (int i = 0; i < sides; ++i) {
+        const float t0 = 6.2831853f * static_cast<float>(i) / static_cast<float>(sides);
+        const float t1 = 6.2831853f * static_cast<float>(i + 1) / static_cast<float>(sides);
+        const glm::vec3 n0 = std::cos(t0) * u + std::sin(t0) * v, n1 = std::cos(t1) * u + std::sin(t1) * v;
+        const SolidVertex p0{a + ra * n0, n0, ca}, p1{a + ra * n1, n1, ca}, q0{b + rb * n0, n0, cb},
+            q1{b + rb * n1, n1, cb};
+        out.insert(out.end(), {p0, p1, q1, p0, q1, q0});
+    }
+}
+
+/// A flat ribbon on the cloth along a polyline (the aim guide).
+void add_ribbon(std::vector<SolidVertex>& out, const std::vector<glm::vec2>& line, float half_width, float z,
+                glm::vec3 colour) {
+    for (std::size_t i = 0; i + 1 < line.size(); ++i) {
+        const glm::vec2 d = line[i + 1] - line[i];
+        if (glm::length(d) < 1e-6f) continue;
+        const glm::vec2 s = half_width * glm::normalize(glm::vec2(-d.y, d.x));
+        const glm::vec3 up{0, 0, 1};
+        const SolidVertex a{{line[i] - s, z}, up, colour}, b{{line[i + 1] - s, z}, up, colour},
+            c{{line[i + 1] + s, z}, up, colour}, e{{line[i] + s, z}, up, colour};
+        out.insert(out.end(), {a, b, c, a, c, e});
+    }
+}
+
+void add_ring(std::vector<SolidVertex>& out, glm::vec2 centre, float radius, float half_width, float z,
+              glm::vec3 colour) {
+    std::vector<glm::vec2> circle;
+    for (int i = 0; i <= 48; ++i) {
+        const float t = 6.2831853f * static_cast<float>(i) / 48.0f;
+        circle.push_back(centre + radius * glm::vec2(std::cos(t), std::sin(t)));
+    }
+    add_ribbon(out, circle, half_width, z, colour);
+}
+
+}  // namespace
+
+glm::vec3 ball_colour(int id) {
+    if (id == 8) return kBlack;
+    if (id >= 9 && id <= 15) return kColours[static_cast<std::size_t>(id - 8)];
+    if (id >= 0 && id <= 7) return kColours[static_cast<std::size_t>(id)];
+    return {0.5f, 0.5f, 0.5f};
+}
+
+bool is_stripe(int id) { return id >= 9 && id <= 15; }
+
+BallView ball_view(const physics::BallState& s, double ball_radius, const glm::dquat& q) {
+    return {s.id,
+            {static_cast<float>(s.pos.x), static_cast<float>(s.pos.y), static_cast<float>(ball_radius)},
+            glm::quat(static_cast<float>(q.w), static_cast<float>(q.x), static_cast<float>(q.y), static_cast<float>(q.z))};
+}
+
+struct Renderer::Impl {
+    physics::Table table;
+    float radius;
+    RenderSettings settings;
+    TableDims dims;
+    std::vector<PocketHole> holes;
+    Mesh cloth, cushions, rails;
+    GLuint quad_vao = 0, quad_vbo = 0;
+    GLuint solid_vao = 0, solid_vbo = 0;
+    GLuint table_prog = 0, ball_prog = 0, shadow_prog = 0, solid_prog = 0;
+    GLuint cloth_tex = 0, wood_tex = 0;
+    std::array<glm::vec4, 3> lamps;
+    // The static table's cache (colour and depth), valid for `cache_key`.
+    GLuint cache_fbo = 0, cache_colour = 0, cache_depth = 0;
+    std::vector<float> cache_key;
+
+    void draw_table(const glm::mat4& view_proj, const glm::vec3& eye);
+    bool use_cache(const FrameView& frame, int width, int height, const glm::mat4& view_proj);
+    void free_cache() {
+        if (cache_fbo) glDeleteFramebuffers(1, &cache_fbo);
+        if (cache_colour) glDeleteRenderbuffers(1, &cache_colour);
+        if (cache_depth) glDeleteRenderbuffers(1, &cache_depth);
+        cache_fbo = cache_colour = cache_depth = 0;
+        cache_key.clear();
+    }
+
+    void set_common(GLuint prog, const glm::mat4& view_proj, const glm::vec3& eye) const {
+        glUseProgram(prog);
+        glUniformMatrix4fv(glGetUniformLocation(prog, "u_view_proj"), 1, GL_FALSE, glm::value_ptr(view_proj));
+        glUniform3fv(glGetUniformLocation(prog, "u_eye"), 1, glm::value_ptr(eye));
+        glUniform4fv(glGetUniformLocation(prog, "u_lamps"), 3, glm::value_ptr(lamps[0]));
+        // Lamp power: 1.0 at 1 m gives a well-exposed cloth under each lamp.
+        glUniform3f(glGetUniformLocation(prog, "u_lamp_colour"), 0.8f, 0.74f, 0.64f);
+        glUniform1f(glGetUniformLocation(prog, "u_exposure"), settings.exposure);
+        glUniform3fv(glGetUniformLocation(prog, "u_background"), 1, glm::value_ptr(kBackground));
+        glUniform1f(glGetUniformLocation(prog, "u_fog_depth"), settings.fog ? dims.apron_depth * 0.9f : 0.0f);
+        glUniform3fv(glGetUniformLocation(prog, "u_cloth_colour"), 1, glm::value_ptr(kClothColour));
+    }
+};
+
+void Renderer::Impl::draw_table(const glm::mat4& view_proj, const glm::vec3& eye) {
+    set_common(table_prog, view_proj, eye);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, cloth_tex);
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, wood_tex);
+    glUniform1i(glGetUniformLocation(table_prog, "u_cloth_tex"), 0);
+    glUniform1i(glGetUniformLocation(table_prog, "u_wood_tex"), 1);
+    std::array<glm::vec3, 6> hole_uniforms{};
+    for (std::size_t i = 0; i < holes.size() && i < hole_uniforms.size(); ++i)
+        hole_uniforms[i] = {holes[i].centre, holes[i].radius};
+    glUniform3fv(glGetUniformLocation(table_prog, "u_holes"), 6, glm::value_ptr(hole_uniforms[0]));
+    glUniform1i(glGetUniformLocation(table_prog, "u_hole_count"), static_cast<GLint>(holes.size()));
+    glUniform4f(glGetUniformLocation(table_prog, "u_table"), static_cast<float>(table.length()),
+                static_cast<float>(table.width()), dims.cushion_width, dims.rail_width);
+    const physics::Vec2 foot = table.foot_spot();
+    glUniform2f(glGetUniformLocation(table_prog, "u_foot_spot"), static_cast<float>(foot.x), static_cast<float>(foot.y));
+    const GLint material = glGetUniformLocation(table_prog, "u_material");
+    int index = 0;
+    // Rails and cushions first, so the depth test spares the cloth hidden under them.
+    for (const Mesh* mesh : {&rails, &cushions, &cloth}) {
+        glUniform1i(material, 2 - index++);
+        glBindVertexArray(mesh->vao);
+        glDrawArrays(GL_TRIANGLES, 0, mesh->count);
+    }
+}
+
+bool Renderer::Impl::use_cache(const FrameView& frame, int width, int height, const glm::mat4& view_proj) {
+    GLint target = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+    if (target == 0) return false;
+    GLint type = GL_NONE, depth_bits = 0, samples = 0;
+    glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
+                                          GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+    if (type != GL_RENDERBUFFER) return false;
+    glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
+                                          GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &depth_bits);
+    glGetIntegerv(GL_SAMPLES, &samples);
+    if (depth_bits != 24) return false;
+    std::vector<float> key = {static_cast<float>(width), static_cast<float>(height), static_cast<float>(samples),
+                              settings.fog ? 1.0f : 0.0f, settings.exposure};
+    const float* vp = glm::value_ptr(view_proj);
+    key.insert(key.end(), vp, vp + 16);
+    (void)frame;
+    if (key != cache_key) {
+        free_cache();
+        glGenFramebuffers(1, &cache_fbo);
+        glGenRenderbuffers(1, &cache_colour);
+        glGenRenderbuffers(1, &cache_depth);
+        glBindRenderbuffer(GL_RENDERBUFFER, cache_colour);
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, width, height);
+        glBindRenderbuffer(GL_RENDERBUFFER, cache_depth);
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, width, height);
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, cache_fbo);
+        glFramebufferRenderbuffer(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, cache_colour);
+        glFramebufferRenderbuffer(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, cache_depth);
+        if (glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+            free_cache();
+            glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target));
+            return false;
+        }
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        draw_table(view_proj, frame.camera.eye);
+        cache_key = key;
+    }
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, cache_fbo);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target));
+    glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    return true;
+}
+
+Renderer::Renderer(const physics::Table& table, double ball_radius, RenderSettings settings)
+    : impl_(std::make_unique<Impl>()) {
+    Impl& m = *impl_;
+    m.table = table;
+    m.radius = static_cast<float>(ball_radius);
+    m.settings = settings;
+    m.dims = table_dims(table);
+    m.holes = pocket_holes(table);
+    const TableMesh mesh = build_table_mesh(table);
+    m.cloth = upload(mesh.cloth);
+    m.cushions = upload(mesh.cushions);
+    m.rails = upload(mesh.rails);
+
+    const float corners[] = {-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1};
+    glGenVertexArrays(1, &m.quad_vao);
+    glGenBuffers(1, &m.quad_vbo);
+    glBindVertexArray(m.quad_vao);
+    glBindBuffer(GL_ARRAY_BUFFER, m.quad_vbo);
+    glBufferData(GL_ARRAY_BUFFER, sizeof corners, corners, GL_STATIC_DRAW);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
+
+    glGenVertexArrays(1, &m.solid_vao);
+    glGenBuffers(1, &m.solid_vbo);
+    glBindVertexArray(m.solid_vao);
+    glBindBuffer(GL_ARRAY_BUFFER, m.solid_vbo);
+    for (GLuint i = 0; i < 3; ++i) {
+        glEnableVertexAttribArray(i);
+        glVertexAttribPointer(i, 3, GL_FLOAT, GL_FALSE, sizeof(SolidVertex),
+                              reinterpret_cast<void*>(sizeof(glm::vec3) * i));
+    }
+    glBindVertexArray(0);
+
+    m.table_prog = build_program(glsl::kTableVert, glsl::kTableFrag);
+    m.ball_prog = build_program(glsl::kBallVert, glsl::kBallFrag);
+    m.shadow_prog = build_program(glsl::kShadowVert, glsl::kShadowFrag);
+    m.solid_prog = build_program(glsl::kSolidVert, glsl::kSolidFrag);
+    m.cloth_tex = upload_texture(make_cloth_texture());
+    m.wood_tex = upload_texture(make_wood_texture());
+
+    // Three shaded lamps along the table's long axis, about 1 m above the cloth.
+    const float L = static_cast<float>(table.length()), W = static_cast<float>(table.width());
+    for (int i = 0; i < 3; ++i)
+        m.lamps[static_cast<std::size_t>(i)] = {L * (0.5f + 0.3f * static_cast<float>(i - 1)), W / 2, 1.0f, 0.16f};
+}
+
+Renderer::~Renderer() {
+    Impl& m = *impl_;
+    for (Mesh* mesh : {&m.cloth, &m.cushions, &m.rails}) {
+        glDeleteBuffers(1, &mesh->vbo);
+        glDeleteVertexArrays(1, &mesh->vao);
+    }
+    glDeleteBuffers(1, &m.quad_vbo);
+    glDeleteVertexArrays(1, &m.quad_vao);
+    glDeleteBuffers(1, &m.solid_vbo);
+    glDeleteVertexArrays(1, &m.solid_vao);
+    for (GLuint p : {m.table_prog, m.ball_prog, m.shadow_prog, m.solid_prog}) glDeleteProgram(p);
+    glDeleteTextures(1, &m.cloth_tex);
+    glDeleteTextures(1, &m.wood_tex);
+    m.free_cache();
+}
+
+RenderSettings& Renderer::settings() { return impl_->settings; }
+
+void Renderer::draw(const FrameView& frame, int width, int height) {
+    Impl& m = *impl_;
+    const float aspect = static_cast<float>(width) / static_cast<float>(std::max(height, 1));
+    const glm::mat4 view_proj = frame.camera.projection(aspect) * frame.camera.view();
+    const glm::vec3 eye = frame.camera.eye;
+
+    glViewport(0, 0, width, height);
+    const glm::vec3 bg = glm::pow(kBackground, glm::vec3(1.0f / 2.2f));
+    glClearColor(bg.x, bg.y, bg.z, 1.0f);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
+
+    // 1. The table: from the cache when it can be, else drawn.
+    if (!(m.settings.cache_table && m.use_cache(frame, width, height, view_proj))) m.draw_table(view_proj, eye);
+
+    // 2. Soft shadows and contact occlusion, multiplied onto the cloth.
+    if (m.settings.shadows) {
+        m.set_common(m.shadow_prog, view_proj, eye);
+        glUniform1f(glGetUniformLocation(m.shadow_prog, "u_radius"), m.radius);
+        const GLint centre = glGetUniformLocation(m.shadow_prog, "u_centre");
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_ZERO, GL_SRC_COLOR);
+        glDepthMask(GL_FALSE);
+        glBindVertexArray(m.quad_vao);
+        for (const BallView& b : frame.balls) {
+            glUniform3fv(centre, 1, glm::value_ptr(b.centre));
+            glDrawArrays(GL_TRIANGLES, 0, 6);
+        }
+        glDepthMask(GL_TRUE);
+        glDisable(GL_BLEND);
+    }
+
+    // 3. The aim guide on the cloth.
+    std::vector<SolidVertex> guide;
+    if (frame.aim) {
+        const AimView& aim = *frame.aim;
+        add_ribbon(guide, aim.cue_path, 0.0012f, 0.0006f, {0.95f, 0.95f, 0.95f});
+        add_ribbon(guide, aim.object_path, 0.0012f, 0.0006f, {1.0f, 0.85f, 0.3f});
+        add_ribbon(guide, aim.cue_after, 0.0009f, 0.0006f, {0.6f, 0.8f, 1.0f});
+        if (aim.ghost) add_ring(guide, *aim.ghost, m.radius, 0.0012f, 0.0007f, {0.95f, 0.95f, 0.95f});
+    }
+    if (!guide.empty()) {
+        m.set_common(m.solid_prog, view_proj, eye);
+        glUniform1i(glGetUniformLocation(m.solid_prog, "u_lit"), 0);
+        glUniform1f(glGetUniformLocation(m.solid_prog, "u_alpha"), 0.7f);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glDepthMask(GL_FALSE);
+        glBindVertexArray(m.solid_vao);
+        glBindBuffer(GL_ARRAY_BUFFER, m.solid_vbo);
+        glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(guide.size() * sizeof(SolidVertex)), guide.data(), GL_STREAM_DRAW);
+        glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(guide.size()));
+        glDepthMask(GL_TRUE);
+        glDisable(GL_BLEND);
+    }
+
+    // 4. The balls: one ray-cast impostor each.
+    m.set_common(m.ball_prog, view_proj, eye);
+    glUniform1f(glGetUniformLocation(m.ball_prog, "u_radius"), m.radius);
+    const GLint u_centre = glGetUniformLocation(m.ball_prog, "u_centre");
+    const GLint u_rotation = glGetUniformLocation(m.ball_prog, "u_rotation");
+    const GLint u_colour = glGetUniformLocation(m.ball_prog, "u_colour");
+    const GLint u_stripe = glGetUniformLocation(m.ball_prog, "u_stripe");
+    const GLint u_cue = glGetUniformLocation(m.ball_prog, "u_cue");
+    glBindVertexArray(m.quad_vao);
+    for (const BallView& b : frame.balls) {
+        const glm::mat3 rot = glm::mat3_cast(b.orientation);
+        const glm::vec3 colour = ball_colour(b.id);
+        glUniform3fv(u_centre, 1, glm::value_ptr(b.centre));
+        glUniformMatrix3fv(u_rotation, 1, GL_FALSE, glm::value_ptr(rot));
+        glUniform3fv(u_colour, 1, glm::value_ptr(colour));
+        glUniform1i(u_stripe, is_stripe(b.id) ? 1 : 0);
+        glUniform1i(u_cue, b.id == 0 ? 1 : 0);
+        glDrawArrays(GL_TRIANGLES, 0, 6);
+    }
+
+    // 5. The cue stick: tip, ferrule, maple shaft, dark butt.
+    if (frame.cue) {
+        const CueView& c = *frame.cue;
+        const glm::vec3 dir{std::cos(c.heading) * std::cos(c.elevation), std::sin(c.heading) * std::cos(c.elevation),
+                            -std::sin(c.elevation)};
+        const glm::vec3 ball{c.cue_ball, m.radius};
+        const glm::vec3 tip = ball - (m.radius + c.pull_back) * dir;
+        std::vector<SolidVertex> cue;
+        const float len = 1.47f;
+        auto at = [&](float s) { return tip - s * dir; };
+        add_lathe(cue, at(0.0f), at(0.010f), 0.0062f, 0.0064f, {0.18f, 0.30f, 0.62f}, {0.18f, 0.30f, 0.62f}, 20);
+        add_lathe(cue, at(0.010f), at(0.035f), 0.0064f, 0.0065f, {0.92f, 0.90f, 0.84f}, {0.92f, 0.90f, 0.84f}, 20);
+        add_lathe(cue, at(0.035f), at(0.75f), 0.0065f, 0.0105f, {0.86f, 0.74f, 0.52f}, {0.80f, 0.66f, 0.44f}, 20);
+        add_lathe(cue, at(0.75f), at(len), 0.0105f, 0.0145f, {0.20f, 0.07f, 0.04f}, {0.08f, 0.03f, 0.02f}, 20);
+        m.set_common(m.solid_prog, view_proj, eye);
+        glUniform1i(glGetUniformLocation(m.solid_prog, "u_lit"), 1);
+        glUniform1f(glGetUniformLocation(m.solid_prog, "u_alpha"), 1.0f);
+        glBindVertexArray(m.solid_vao);
+        glBindBuffer(GL_ARRAY_BUFFER, m.solid_vbo);
+        glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(cue.size() * sizeof(SolidVertex)), cue.data(), GL_STREAM_DRAW);
+        glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(cue.size()));
+    }
+    glBindVertexArray(0);
+}
+
+OffscreenTarget::OffscreenTarget(int width, int height, int samples)
+    : width_(width), height_(height), samples_(1) {
+    GLint max_samples = 1;
+    glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
+    samples_ = std::max(1, std::min(samples, static_cast<int>(max_samples)));
+    glGenFramebuffers(1, &resolve_fbo_);
+    glGenRenderbuffers(1, &resolve_colour_);
+    glBindRenderbuffer(GL_RENDERBUFFER, resolve_colour_);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+    glBindFramebuffer(GL_FRAMEBUFFER, resolve_fbo_);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, resolve_colour_);
+
+    glGenFramebuffers(1, &draw_fbo_);
+    glGenRenderbuffers(1, &draw_colour_);
+    glGenRenderbuffers(1, &draw_depth_);
+    glBindRenderbuffer(GL_RENDERBUFFER, draw_colour_);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_ > 1 ? samples_ : 0, GL_RGBA8, width, height);
+    glBindRenderbuffer(GL_RENDERBUFFER, draw_depth_);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_ > 1 ? samples_ : 0, GL_DEPTH_COMPONENT24, width, height);
+    glBindFramebuffer(GL_FRAMEBUFFER, draw_fbo_);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, draw_colour_);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, draw_depth_);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw std::runtime_error("offscreen framebuffer incomplete: try fewer samples");
+}
+
+OffscreenTarget::~OffscreenTarget() {
+    glDeleteFramebuffers(1, &draw_fbo_);
+    glDeleteFramebuffers(1, &resolve_fbo_);
+    glDeleteRenderbuffers(1, &draw_colour_);
+    glDeleteRenderbuffers(1, &draw_depth_);
+    glDeleteRenderbuffers(1, &resolve_colour_);
+}
+
+void OffscreenTarget::bind() {
+    glBindFramebuffer(GL_FRAMEBUFFER, draw_fbo_);
+    glViewport(0, 0, width_, height_);
+}
+
+void OffscreenTarget::resolve() {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, draw_fbo_);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo_);
+    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, resolve_fbo_);
+}
+
+}  // namespace render

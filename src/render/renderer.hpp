@@ -1,0 +1,109 @@
+// The renderer: draws the table, the balls (ray-cast sphere impostors), their soft shadows,
+// the cue and the aim guide into the current GL context's bound framebuffer, from a
+// read-only view. OpenGL 3.3 core through libepoxy; no window code. Create it with a
+// context current; it must be destroyed while that context is still current.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include "physics/ball_state.hpp"
+#include "physics/table.hpp"
+#include "render/camera.hpp"
+
+namespace render {
+
+/// One ball as drawn.
+struct BallView {
+    int id = 0;                     ///< 0 cue ball, 1–15 object balls
+    glm::vec3 centre{0.0f};         ///< (unit: m), table frame; z = R on the cloth
+    glm::quat orientation{1, 0, 0, 0};  ///< ball frame → table frame
+};
+
+/// The cue stick: where its tip is, which way it points, how far it is drawn back.
+struct CueView {
+    glm::vec2 cue_ball{0.0f};   ///< cue-ball centre (unit: m)
+    float heading = 0.0f;       ///< direction of the stroke, from +x counter-clockwise (unit: rad)
+    float elevation = 0.0f;     ///< butt raised by this angle (unit: rad)
+    float pull_back = 0.05f;    ///< gap between the tip and the ball (unit: m)
+};
+
+/// The aim guide: polylines on the cloth and a ghost ball, all from the physics engine.
+struct AimView {
+    std::vector<glm::vec2> cue_path;     ///< cue ball to the first contact (unit: m)
+    std::optional<glm::vec2> ghost;      ///< cue-ball centre at the first contact
+    std::vector<glm::vec2> object_path;  ///< the object ball's direction after contact
+    std::vector<glm::vec2> cue_after;    ///< the cue ball's direction after contact
+};
+
+/// Everything one frame shows. Spans must stay valid during draw().
+struct FrameView {
+    std::span<const BallView> balls;   ///< pocketed balls simply left out
+    Camera camera;
+    std::optional<CueView> cue;
+    const AimView* aim = nullptr;
+};
+
+/// Quality switches (defaults: everything on).
+struct RenderSettings {
+    bool shadows = true;     ///< soft ball shadows and contact occlusion on the cloth
+    bool fog = true;         ///< the table's lower part fades into the background
+    float exposure = 1.0f;   ///< scale of all light (unit: 1)
+    /// Draw the table once per camera and size into a cache and copy it each frame (the
+    /// overhead camera is fixed). Used only when the bound framebuffer is an FBO with a
+    /// 24-bit depth attachment (OffscreenTarget); otherwise the table is drawn every frame.
+    bool cache_table = true;
+};
+
+/// Standard ball colours (sRGB, 0–1): 0 cue ball, 1–8 solids, 9–15 stripes of 1–7's colour.
+glm::vec3 ball_colour(int id);
+bool is_stripe(int id);
+
+/// A ball on the cloth from a physics state (z = R).
+BallView ball_view(const physics::BallState& state, double ball_radius, const glm::dquat& orientation);
+
+class Renderer {
+public:
+    Renderer(const physics::Table& table, double ball_radius, RenderSettings settings = {});
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    /// Clears and draws a frame into the bound framebuffer's (0, 0, width, height) viewport.
+    void draw(const FrameView& frame, int width, int height);
+
+    RenderSettings& settings();
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+/// An offscreen target: a multisampled framebuffer (when `samples` > 1 and supported),
+/// resolved into a plain RGBA8 one that read_pixels() can read.
+class OffscreenTarget {
+public:
+    OffscreenTarget(int width, int height, int samples = 4);
+    ~OffscreenTarget();
+    OffscreenTarget(const OffscreenTarget&) = delete;
+    OffscreenTarget& operator=(const OffscreenTarget&) = delete;
+    /// Binds the framebuffer to draw into.
+    void bind();
+    /// Resolves the samples and binds the result for reading.
+    void resolve();
+    int width() const { return width_; }
+    int height() const { return height_; }
+    int samples() const { return samples_; }
+
+private:
+    int width_, height_, samples_;
+    unsigned draw_fbo_ = 0, draw_colour_ = 0, draw_depth_ = 0;
+    unsigned resolve_fbo_ = 0, resolve_colour_ = 0;
+};
+
+}  // namespace render

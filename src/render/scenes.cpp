@@ -1,0 +1,101 @@
+#include "render/scenes.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "physics/rack.hpp"
+#include "physics/scenes.hpp"
+#include "physics/simulate.hpp"
+#include "render/orientation.hpp"
+
+namespace render {
+
+namespace {
+
+std::vector<BallView> views_at(const physics::Shot& shot, double t, double radius) {
+    std::vector<BallView> out;
+    for (std::size_t i = 0; i < shot.ball_count(); ++i) {
+        const int id = shot.ball_id(i);
+        const physics::BallState s = shot.state_at(id, t);
+        if (s.motion == physics::Motion::pocketed) continue;
+        out.push_back(ball_view(s, radius, integrate_orientation(shot, id, 0.0, t, initial_orientation(id))));
+    }
+    return out;
+}
+
+}  // namespace
+
+DemoScene racked_scene(float aspect) {
+    DemoScene s;
+    const physics::Params params;
+    s.table = physics::build_table(*physics::table_preset("9ft"));
+    s.ball_radius = params.ball_radius;
+    for (const physics::BallState& b : physics::rack(physics::RackType::eight_ball, s.table, params, 7))
+        s.balls.push_back(ball_view(b, s.ball_radius, initial_orientation(b.id)));
+    s.camera = overhead_camera(s.table, aspect);
+    return s;
+}
+
+DemoScene mid_game_scene(float aspect, double t) {
+    DemoScene s;
+    const physics::Params params;
+    const physics::Scene scene = physics::standard_scene("break", params);
+    s.table = physics::build_table(scene.table);
+    s.ball_radius = params.ball_radius;
+    const physics::Shot shot = physics::simulate(s.table, params, scene.balls, &scene.stroke);
+    s.balls = views_at(shot, t, s.ball_radius);
+    s.camera = overhead_camera(s.table, aspect);
+    return s;
+}
+
+DemoScene mid_roll_scene(float aspect, double t) {
+    DemoScene s;
+    const physics::Params params;
+    s.table = physics::build_table(*physics::table_preset("9ft"));
+    s.ball_radius = params.ball_radius;
+    // The cue ball drives the 11 (a stripe) straight up the table; the 11 slides, then rolls.
+    physics::BallState cue;
+    cue.id = 0;
+    cue.pos = {0.55, 0.60};
+    physics::BallState eleven;
+    eleven.id = 11;
+    eleven.pos = {0.95, 0.62};
+    const physics::BallState balls[] = {cue, eleven};
+    physics::Stroke stroke;
+    stroke.speed = 2.6;
+    stroke.heading_deg = 2.0;
+    const physics::Shot shot = physics::simulate(s.table, params, balls, &stroke);
+    s.balls = views_at(shot, t, s.ball_radius);
+    // Low and close beside the 11's path, looking at it.
+    const physics::BallState now = shot.state_at(11, t);
+    const glm::vec2 p{static_cast<float>(now.pos.x), static_cast<float>(now.pos.y)};
+    s.camera.target = {p, static_cast<float>(s.ball_radius)};
+    s.camera.eye = {p + glm::vec2(0.12f, -0.30f), 0.16f};
+    s.camera.up = {0, 0, 1};
+    s.camera.fovy_deg = 30.0f;
+    s.camera.near_m = 0.02f;
+    s.camera.far_m = 8.0f;
+    (void)aspect;
+    return s;
+}
+
+DemoScene cue_view_scene(float aspect) {
+    DemoScene s = racked_scene(aspect);
+    const BallView& cue = s.balls.front();
+    const glm::vec2 c{cue.centre.x, cue.centre.y};
+    const physics::Vec2 foot = s.table.foot_spot();
+    const glm::vec2 apex{static_cast<float>(foot.x), static_cast<float>(foot.y)};
+    const glm::vec2 d = glm::normalize(apex - c);
+    const float heading = std::atan2(d.y, d.x);
+    s.cue = CueView{c, heading, 0.08f, 0.06f};
+    s.camera = cue_ball_camera(c, heading);
+    const float R = static_cast<float>(s.ball_radius);
+    const glm::vec2 ghost = apex - 2.0f * R * d;
+    s.aim.cue_path = {c, ghost};
+    s.aim.ghost = ghost;
+    s.aim.object_path = {apex, apex + 0.4f * d};
+    s.show_aim = true;
+    return s;
+}
+
+}  // namespace render

@@ -1,0 +1,401 @@
+#include "render/shaders.hpp"
+
+#include <epoxy/gl.h>
+
+#include <stdexcept>
+#include <string>
+
+namespace render {
+
+std::string shader_source(std::string_view body, GlslTarget target) {
+    std::string s = target == GlslTarget::gl33 ? "#version 330 core\n"
+                                               : "#version 300 es\nprecision highp float;\nprecision highp int;\n";
+    s += body;
+    return s;
+}
+
+namespace {
+
+unsigned compile(GLenum type, const std::string& source) {
+    GLuint s = glCreateShader(type);
+    const char* src = source.c_str();
+    glShaderSource(s, 1, &src, nullptr);
+    glCompileShader(s);
+    GLint ok = 0;
+    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        char log[4096];
+        glGetShaderInfoLog(s, sizeof log, nullptr, log);
+        glDeleteShader(s);
+        throw std::runtime_error(std::string("shader compile failed: ") + log);
+    }
+    return s;
+}
+
+}  // namespace
+
+unsigned build_program(std::string_view vertex_body, std::string_view fragment_body) {
+    GLuint vs = compile(GL_VERTEX_SHADER, shader_source(vertex_body));
+    GLuint fs = compile(GL_FRAGMENT_SHADER, shader_source(std::string(glsl::kCommon) + std::string(fragment_body)));
+    GLuint p = glCreateProgram();
+    glAttachShader(p, vs);
+    glAttachShader(p, fs);
+    glLinkProgram(p);
+    glDeleteShader(vs);
+    glDeleteShader(fs);
+    GLint ok = 0;
+    glGetProgramiv(p, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        char log[4096];
+        glGetProgramInfoLog(p, sizeof log, nullptr, log);
+        glDeleteProgram(p);
+        throw std::runtime_error(std::string("shader link failed: ") + log);
+    }
+    return p;
+}
+
+namespace glsl {
+
+const char* const kCommon = R"(
+// Lamps over the table: position (unit: m) and radius of the shade's opening in w.
+uniform vec4 u_lamps[3];
+uniform vec3 u_lamp_colour;
+uniform vec3 u_eye;
+uniform float u_exposure;
+uniform vec3 u_background;   // linear
+uniform float u_fog_depth;   // below the cloth, the depth at which the fog is complete (unit: m); 0: off
+
+vec3 to_linear(vec3 c) { return pow(c, vec3(2.2)); }
+
+// Direct light from the lamps on a surface at p with normal n: diffuse irradiance and
+// Blinn-Phong specular toward the eye (exponent `shine`, weight `spec`).
+vec3 lamps_light(vec3 p, vec3 n, vec3 albedo, float shine, float spec) {
+    vec3 v = normalize(u_eye - p);
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < 3; ++i) {
+        vec3 d = u_lamps[i].xyz - p;
+        float dist2 = dot(d, d);
+        vec3 l = d * inversesqrt(dist2);
+        // The shade limits the light to a cone: full below it, gone beyond ~70 degrees.
+        float cone = smoothstep(0.25, 0.6, l.z);
+        float ndl = max(dot(n, l), 0.0);
+        vec3 h = normalize(l + v);
+        float s = spec * pow(max(dot(n, h), 0.0), shine) * (shine + 8.0) / 25.0;
+        sum += u_lamp_colour * cone * (albedo * ndl + s * step(0.0, dot(n, l))) / dist2;
+    }
+    return sum;
+}
+
+// Diffuse light only (the cloth): cheaper, for the largest area on screen.
+vec3 lamps_diffuse(vec3 p, vec3 n, vec3 albedo) {
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < 3; ++i) {
+        vec3 d = u_lamps[i].xyz - p;
+        float inv = inversesqrt(dot(d, d));
+        vec3 l = d * inv;
+        sum += smoothstep(0.25, 0.6, l.z) * max(dot(n, l), 0.0) * inv * inv;
+    }
+    return u_lamp_colour * albedo * sum;
+}
+
+// ACES filmic fit (Narkowicz 2015), then display gamma.
+vec3 tone_map(vec3 c) {
+    c *= u_exposure;
+    c = clamp((c * (2.51 * c + 0.03)) / (c * (2.43 * c + 0.59) + 0.14), 0.0, 1.0);
+    return pow(c, vec3(1.0 / 2.2));
+}
+
+// Height fog: the table below the cloth fades into the room's darkness.
+vec3 apply_fog(vec3 c, vec3 p) {
+    if (u_fog_depth <= 0.0) return c;
+    float f = clamp(-p.z / u_fog_depth, 0.0, 1.0);
+    return mix(c, u_background, f * f * (3.0 - 2.0 * f));
+}
+)";
+
+const char* const kTableVert = R"(
+layout(location = 0) in vec3 a_pos;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec2 a_uv;
+uniform mat4 u_view_proj;
+out vec3 v_pos;
+out vec3 v_normal;
+out vec2 v_uv;
+void main() {
+    v_pos = a_pos;
+    v_normal = a_normal;
+    v_uv = a_uv;
+    gl_Position = u_view_proj * vec4(a_pos, 1.0);
+}
+)";
+
+const char* const kTableFrag = R"(
+in vec3 v_pos;
+in vec3 v_normal;
+in vec2 v_uv;
+layout(location = 0) out vec4 o_colour;
+uniform int u_material;        // 0 cloth, 1 cushion, 2 wood
+uniform sampler2D u_cloth_tex;
+uniform sampler2D u_wood_tex;
+uniform vec3 u_holes[6];       // xy centre, z radius (unit: m)
+uniform int u_hole_count;
+uniform vec4 u_table;          // length, width, cushion width, rail width (unit: m)
+uniform vec3 u_cloth_colour;   // sRGB
+uniform vec2 u_foot_spot;
+
+float hole_distance(vec2 p, out float radius) {
+    float best = 1e9;
+    radius = 0.0;
+    for (int i = 0; i < 6; ++i) {
+        if (i >= u_hole_count) break;
+        float d = length(p - u_holes[i].xy) - u_holes[i].z;
+        if (d < best) { best = d; radius = u_holes[i].z; }
+    }
+    return best;
+}
+
+// Mother-of-pearl sights: three per short rail, six per long rail, on the rail's centre line.
+float diamond(vec2 p) {
+    float L = u_table.x, W = u_table.y;
+    float mid = u_table.z + 0.5 * u_table.w;
+    float best = 1e9;
+    vec2 q;
+    if (p.y < 0.0 || p.y > W) {
+        float k = clamp(floor(p.x / (L / 8.0) + 0.5), 1.0, 7.0);
+        if (k == 4.0) k = 3.0;
+        q = vec2(p.x - k * L / 8.0, p.y < 0.0 ? p.y + mid : p.y - W - mid);
+        best = abs(q.x) + abs(q.y) * 0.55;
+    }
+    if (p.x < 0.0 || p.x > L) {
+        float k = clamp(floor(p.y / (W / 4.0) + 0.5), 1.0, 3.0);
+        q = vec2(p.y - k * W / 4.0, p.x < 0.0 ? p.x + mid : p.x - L - mid);
+        best = min(best, abs(q.x) + abs(q.y) * 0.55);
+    }
+    return best;
+}
+
+void main() {
+    vec3 n = normalize(v_normal);
+    if (dot(n, u_eye - v_pos) < 0.0) n = -n;
+    float hole_r = 0.0;
+    // Only near the edges can a point be in or near a pocket.
+    bool inner = v_pos.x > 0.15 && v_pos.x < u_table.x - 0.15 && v_pos.y > 0.15 && v_pos.y < u_table.y - 0.15;
+    float hd = inner ? 1.0 : hole_distance(v_pos.xy, hole_r);
+    vec3 c;
+    if (u_material == 0) {
+        vec3 albedo = to_linear(u_cloth_colour);
+        float nap = texture(u_cloth_tex, v_uv * 12.0).r;
+        albedo *= 0.72 + 0.56 * nap;
+        // Foot spot.
+        albedo = mix(albedo, vec3(0.75), 1.0 - smoothstep(0.006, 0.0075, length(v_pos.xy - u_foot_spot)));
+        c = lamps_diffuse(v_pos, n, albedo) + albedo * 0.035;
+        // Beyond the cushion noses and outside the hole: the pocket's black leather liner.
+        float outside = max(max(-v_pos.x, v_pos.x - u_table.x), max(-v_pos.y, v_pos.y - u_table.y));
+        c = mix(c, vec3(0.012, 0.010, 0.009), smoothstep(0.0, 0.006, outside));
+        if (hd < 0.0) {
+            // The pocket: dark inside, a little light on the far wall of the hole.
+            float depth = clamp(-hd / hole_r, 0.0, 1.0);
+            c = mix(vec3(0.018, 0.016, 0.014), vec3(0.002), sqrt(depth));
+        } else {
+            c *= mix(0.35, 1.0, smoothstep(0.0, 0.012, hd));  // the cloth turning down over the slate edge
+        }
+    } else if (u_material == 1) {
+        if (hd < 0.0) discard;
+        vec3 albedo = to_linear(u_cloth_colour) * 0.92;
+        float nap = texture(u_cloth_tex, v_uv * 12.0).r;
+        albedo *= 0.8 + 0.4 * nap;
+        c = lamps_light(v_pos, n, albedo, 8.0, 0.015) + albedo * 0.035;
+    } else {
+        if (hd < 0.0) discard;
+        vec3 albedo = to_linear(texture(u_wood_tex, vec2(v_uv.x / 1.3, v_uv.y / 0.16)).rgb);
+        float shine = 60.0, spec = 0.25;
+        if (n.z > 0.9) {
+            float dm = diamond(v_pos.xy);
+            float pearl = 1.0 - smoothstep(0.007, 0.0085, dm);
+            albedo = mix(albedo, vec3(0.85, 0.83, 0.78), pearl);
+            // The pocket's leather lip round the hole.
+            float lip = 1.0 - smoothstep(0.010, 0.013, hd);
+            albedo = mix(albedo, vec3(0.012, 0.010, 0.009), lip);
+            spec = mix(spec, 0.05, lip);
+        }
+        c = lamps_light(v_pos, n, albedo, shine, spec) + albedo * 0.06;
+    }
+    o_colour = vec4(tone_map(apply_fog(c, v_pos)), 1.0);
+}
+)";
+
+const char* const kBallVert = R"(
+layout(location = 0) in vec2 a_corner;   // (-1,-1) .. (1,1)
+uniform mat4 u_view_proj;
+uniform vec3 u_eye;
+uniform vec3 u_centre;
+uniform float u_radius;
+out vec3 v_world;
+void main() {
+    // A billboard through the centre, facing the eye, large enough for the silhouette.
+    vec3 to_eye = u_eye - u_centre;
+    float d = length(to_eye);
+    vec3 f = to_eye / d;
+    vec3 up = abs(f.z) < 0.99 ? vec3(0.0, 0.0, 1.0) : vec3(0.0, 1.0, 0.0);
+    vec3 r = normalize(cross(up, f));
+    vec3 u = cross(f, r);
+    float s = u_radius * d / sqrt(max(d * d - u_radius * u_radius, 1e-6)) * 1.08;
+    v_world = u_centre + s * (a_corner.x * r + a_corner.y * u);
+    gl_Position = u_view_proj * vec4(v_world, 1.0);
+}
+)";
+
+const char* const kBallFrag = R"(
+in vec3 v_world;
+layout(location = 0) out vec4 o_colour;
+uniform mat4 u_view_proj;
+uniform vec3 u_centre;
+uniform float u_radius;
+uniform mat3 u_rotation;      // ball frame -> table frame
+uniform vec3 u_colour;        // sRGB
+uniform int u_stripe;         // 1: a stripe ball (colour band on white)
+uniform int u_cue;            // 1: the cue ball
+uniform vec3 u_cloth_colour;  // sRGB, for the reflection of the table
+
+// What the ball's varnish reflects: the lit cloth below, the dark room above, the lamps' discs.
+vec3 environment(vec3 r, vec3 p) {
+    vec3 env;
+    if (r.z < 0.0) {
+        env = to_linear(u_cloth_colour) * 0.8 * smoothstep(-0.02, -0.3, r.z);
+    } else {
+        env = vec3(0.012, 0.011, 0.010);
+    }
+    for (int i = 0; i < 3; ++i) {
+        vec3 d = u_lamps[i].xyz - p;
+        float dist = length(d);
+        float cos_a = dot(r, d / dist);
+        float ang = u_lamps[i].w / dist;        // angular radius of the lamp's opening
+        float disc = smoothstep(cos(ang), cos(ang * 0.8), cos_a);
+        env += u_lamp_colour * 0.45 * disc;
+    }
+    return env;
+}
+
+void main() {
+    vec3 dir = normalize(v_world - u_eye);
+    vec3 oc = u_eye - u_centre;
+    float b = dot(oc, dir);
+    float c = dot(oc, oc) - u_radius * u_radius;
+    float h = b * b - c;
+    if (h < 0.0) discard;
+    float t = -b - sqrt(h);
+    vec3 p = u_eye + t * dir;
+    vec3 n = (p - u_centre) / u_radius;
+    vec3 local = transpose(u_rotation) * n;
+
+    vec3 white = vec3(0.93, 0.92, 0.86);
+    vec3 albedo = u_colour;
+    if (u_stripe == 1 && abs(local.z) > 0.48) albedo = white;
+    // The number's white circle, on both sides.
+    if (u_cue == 0 && abs(local.x) > 0.89) albedo = white;
+    // The cue ball's red dots show its spin.
+    if (u_cue == 1 && abs(local.x) > 0.985) albedo = vec3(0.75, 0.05, 0.04);
+    albedo = to_linear(albedo);
+
+    float ndv = max(dot(n, -dir), 0.0);
+    float fresnel = 0.04 + 0.96 * pow(1.0 - ndv, 5.0);
+    vec3 diffuse = lamps_light(p, n, albedo, 400.0, 0.6);
+    // Ambient: light bounced off the cloth from below, the dim room above.
+    vec3 ambient = albedo * mix(to_linear(u_cloth_colour) * 0.9, vec3(0.06), 0.5 + 0.5 * n.z);
+    // The ball's contact with the cloth darkens its very bottom.
+    ambient *= smoothstep(-1.0, -0.6, n.z);
+    vec3 r = reflect(dir, n);
+    vec3 col = diffuse + ambient + fresnel * environment(r, p) * 1.0 + 0.06 * environment(r, p) * (1.0 - fresnel);
+
+    vec4 clip = u_view_proj * vec4(p, 1.0);
+    gl_FragDepth = 0.5 * (clip.z / clip.w) + 0.5;
+    o_colour = vec4(tone_map(col), 1.0);
+}
+)";
+
+const char* const kShadowVert = R"(
+layout(location = 0) in vec2 a_corner;
+uniform mat4 u_view_proj;
+uniform vec3 u_centre;
+uniform float u_radius;
+out vec3 v_world;
+void main() {
+    v_world = vec3(u_centre.xy + a_corner * u_radius * 4.0, 0.0004);
+    gl_Position = u_view_proj * vec4(v_world, 1.0);
+}
+)";
+
+// Soft shadow of one ball on the cloth, computed analytically: for each lamp, the fraction of
+// the lamp's disc that the ball's disc covers as seen from the cloth point, weighted by that
+// lamp's share of the light there; and the ambient occlusion of a sphere above a plane,
+// (R/d)^2 cos(theta). The output multiplies the framebuffer.
+const char* const kShadowFrag = R"(
+in vec3 v_world;
+layout(location = 0) out vec4 o_colour;
+uniform vec3 u_centre;
+uniform float u_radius;
+void main() {
+    vec3 p = vec3(v_world.xy, 0.0);
+    vec3 to_ball = u_centre - p;
+    float db = length(to_ball);
+    vec3 bdir = to_ball / db;
+    float ab = asin(min(u_radius / db, 1.0));
+    float lit = 0.0, shadowed = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        vec3 d = u_lamps[i].xyz - p;
+        float dl = length(d);
+        vec3 ldir = d / dl;
+        float w = smoothstep(0.25, 0.6, ldir.z) * ldir.z / (dl * dl);
+        float al = asin(min(u_lamps[i].w / dl, 1.0));
+        float sep = acos(clamp(dot(ldir, bdir), -1.0, 1.0));
+        float cover = 1.0 - smoothstep(abs(ab - al), ab + al, sep);
+        cover *= min(1.0, (ab * ab) / (al * al));
+        lit += w;
+        shadowed += w * cover;
+    }
+    float ambient = 0.035;
+    float ao = (u_radius * u_radius) / (db * db) * max(bdir.z, 0.0);
+    float keep = (lit - shadowed + ambient * (1.0 - ao)) / (lit + ambient);
+    o_colour = vec4(vec3(keep), 1.0);
+}
+)";
+
+const char* const kSolidVert = R"(
+layout(location = 0) in vec3 a_pos;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec3 a_colour;
+uniform mat4 u_view_proj;
+out vec3 v_pos;
+out vec3 v_normal;
+out vec3 v_colour;
+void main() {
+    v_pos = a_pos;
+    v_normal = a_normal;
+    v_colour = a_colour;
+    gl_Position = u_view_proj * vec4(a_pos, 1.0);
+}
+)";
+
+const char* const kSolidFrag = R"(
+in vec3 v_pos;
+in vec3 v_normal;
+in vec3 v_colour;
+layout(location = 0) out vec4 o_colour;
+uniform int u_lit;     // 1: lit by the lamps; 0: flat colour (the aim guide)
+uniform float u_alpha;
+void main() {
+    if (u_lit == 0) {
+        o_colour = vec4(v_colour, u_alpha);
+        return;
+    }
+    vec3 n = normalize(v_normal);
+    if (dot(n, u_eye - v_pos) < 0.0) n = -n;
+    vec3 albedo = to_linear(v_colour);
+    vec3 c = lamps_light(v_pos, n, albedo, 90.0, 0.35) + albedo * 0.06;
+    o_colour = vec4(tone_map(apply_fog(c, v_pos)), u_alpha);
+}
+)";
+
+}  // namespace glsl
+
+}  // namespace render

@@ -1,0 +1,30 @@
+// GLSL sources. Bodies are GLSL ES 3.00-compatible; only the #version line differs between
+// desktop OpenGL 3.3 core and WebGL 2 / GLES 3.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace render {
+
+enum class GlslTarget { gl33, es300 };
+
+/// The #version line (and, for ES, default precision) followed by the body.
+std::string shader_source(std::string_view body, GlslTarget target = GlslTarget::gl33);
+
+/// Compiles and links a program; throws std::runtime_error with the info log on failure.
+unsigned build_program(std::string_view vertex_body, std::string_view fragment_body);
+
+namespace glsl {
+extern const char* const kCommon;       ///< lamps, tone mapping, fog (included by the fragment shaders)
+extern const char* const kTableVert;
+extern const char* const kTableFrag;
+extern const char* const kBallVert;
+extern const char* const kBallFrag;
+extern const char* const kShadowVert;
+extern const char* const kShadowFrag;
+extern const char* const kSolidVert;    ///< cue stick, aim guide: lit or flat-coloured geometry
+extern const char* const kSolidFrag;
+}  // namespace glsl
+
+}  // namespace render

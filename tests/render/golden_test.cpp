@@ -1,0 +1,92 @@
+// Golden-image tests: fixed scenes rendered headless (EGL on Mesa llvmpipe) into a
+// multisampled framebuffer and compared with the PNGs in tests/render/data with a small
+// per-pixel tolerance. tools/render/regenerate_goldens.sh rewrites the goldens on purpose.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "render/headless_context.hpp"
+#include "render/image.hpp"
+#include "render/renderer.hpp"
+#include "render/scenes.hpp"
+
+namespace {
+
+constexpr int kWidth = 480;
+constexpr int kHeight = 270;
+/// A channel may differ by this much (unit: 1/255) ...
+constexpr int kTolerance = 6;
+/// ... in at most this fraction of the pixels.
+constexpr double kMaxFractionOver = 0.002;
+
+class GoldenTest : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() { context_ = std::make_unique<render::HeadlessContext>(); }
+    static void TearDownTestSuite() { context_.reset(); }
+
+    static render::Image draw(const render::DemoScene& scene, bool cache_table = true) {
+        render::RenderSettings settings;
+        settings.cache_table = cache_table;
+        render::Renderer renderer(scene.table, scene.ball_radius, settings);
+        render::OffscreenTarget target(kWidth, kHeight, 4);
+        target.bind();
+        renderer.draw(scene.frame(), kWidth, kHeight);
+        target.resolve();
+        return render::read_pixels(kWidth, kHeight);
+    }
+
+    static void check(const std::string& name, const render::Image& actual) {
+        namespace fs = std::filesystem;
+        const fs::path golden = fs::path(COOLAABER_TEST_DATA) / (name + ".png");
+        const fs::path out_dir = fs::temp_directory_path() / "coolaaber-render";
+        fs::create_directories(out_dir);
+        const fs::path out = out_dir / (name + ".png");
+        ASSERT_TRUE(render::write_png(out.string(), actual));
+        const char* regen = std::getenv("COOLAABER_REGENERATE_GOLDENS");
+        if (regen && std::string(regen) == "1") {
+            ASSERT_TRUE(render::write_png(golden.string(), actual)) << "cannot write " << golden;
+            return;
+        }
+        const render::Image expected = render::load_png(golden.string());
+        ASSERT_GT(expected.width, 0) << "missing golden " << golden
+                                     << ": run tools/render/regenerate_goldens.sh and look at the result";
+        const render::ImageDiff d = render::compare(actual, expected, kTolerance);
+        ASSERT_TRUE(d.same_size) << name << ": golden is " << expected.width << "x" << expected.height;
+        EXPECT_LE(d.fraction_over, kMaxFractionOver)
+            << name << ": " << d.fraction_over * 100 << "% of pixels differ by more than " << kTolerance
+            << " (largest difference " << d.max_channel_diff << "); actual image: " << out
+            << "; if the change is intended, run tools/render/regenerate_goldens.sh";
+    }
+
+    static std::unique_ptr<render::HeadlessContext> context_;
+};
+
+std::unique_ptr<render::HeadlessContext> GoldenTest::context_;
+
+constexpr float kAspect = static_cast<float>(kWidth) / static_cast<float>(kHeight);
+
+TEST_F(GoldenTest, RackedTableOverhead) { check("racked_overhead", draw(render::racked_scene(kAspect))); }
+
+TEST_F(GoldenTest, BallMidRoll) { check("mid_roll", draw(render::mid_roll_scene(kAspect))); }
+
+TEST_F(GoldenTest, MidGameOverhead) { check("mid_game", draw(render::mid_game_scene(kAspect))); }
+
+TEST_F(GoldenTest, CueBallViewWithAimGuide) { check("cue_view", draw(render::cue_view_scene(kAspect))); }
+
+TEST_F(GoldenTest, RendersAreRepeatable) {
+    const render::DemoScene scene = render::racked_scene(kAspect);
+    const render::Image a = draw(scene), b = draw(scene);
+    const render::ImageDiff d = render::compare(a, b, 0);
+    EXPECT_EQ(d.max_channel_diff, 0);
+}
+
+TEST_F(GoldenTest, CachedTableMatchesDrawnTable) {
+    const render::DemoScene scene = render::mid_game_scene(kAspect);
+    const render::ImageDiff d = render::compare(draw(scene, true), draw(scene, false), 0);
+    EXPECT_EQ(d.max_channel_diff, 0);
+}
+
+}  // namespace
