@@ -28,12 +28,15 @@ glm::dquat integrate_orientation(const physics::Shot& shot, int id, double t0, d
 }
 
 glm::dquat initial_orientation(int id) {
-    // Golden-angle spread of axes and angles: deterministic and varied.
-    const double a = 2.399963229728653 * (id + 1);
-    const double z = std::cos(1.7 * id + 0.3);
-    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-    const glm::dvec3 axis{r * std::cos(a), r * std::sin(a), z};
-    return glm::angleAxis(0.6 + 0.9 * id, glm::normalize(axis));
+    // The number circles' axis (ball x) tilted 35–75° up from the cloth, at golden-angle
+    // azimuths, with a varied roll about it: deterministic and varied, stripes and numbers
+    // not all facing up, yet most numbers readable from above as on a freshly racked table.
+    const double golden = 2.399963229728653;
+    const double azimuth = golden * (id + 1);
+    const double elevation = 0.61 + 0.70 * (0.5 + 0.5 * std::sin(1.7 * id + 0.3));
+    const double roll = 0.6 + 0.9 * id;
+    return glm::angleAxis(azimuth, glm::dvec3(0, 0, 1)) * glm::angleAxis(-elevation, glm::dvec3(0, 1, 0)) *
+           glm::angleAxis(roll, glm::dvec3(1, 0, 0));
 }
 
 }  // namespace render

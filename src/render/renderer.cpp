@@ -141,7 +141,7 @@ struct Renderer::Impl {
     GLuint quad_vao = 0, quad_vbo = 0;
     GLuint solid_vao = 0, solid_vbo = 0;
     GLuint table_prog = 0, ball_prog = 0, shadow_prog = 0, solid_prog = 0;
-    GLuint cloth_tex = 0, wood_tex = 0;
+    GLuint cloth_tex = 0, wood_tex = 0, number_tex = 0;
     std::array<glm::vec4, 3> lamps;
     // The static table's cache (colour and depth), valid for `cache_key`.
     GLuint cache_fbo = 0, cache_colour = 0, cache_depth = 0;
@@ -281,6 +281,11 @@ Renderer::Renderer(const physics::Table& table, double ball_radius, RenderSettin
     m.solid_prog = build_program(glsl::kSolidVert, glsl::kSolidFrag);
     m.cloth_tex = upload_texture(make_cloth_texture());
     m.wood_tex = upload_texture(make_wood_texture());
+    m.number_tex = upload_texture(make_number_atlas(settings.number_font));
+    // Mipmaps down to 4 texels a cell, so far-away numbers blur instead of mixing cells.
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 4);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 
     // Three shaded lamps along the table's long axis, about 1 m above the cloth.
     const float L = static_cast<float>(table.length()), W = static_cast<float>(table.width());
@@ -301,6 +306,7 @@ Renderer::~Renderer() {
     for (GLuint p : {m.table_prog, m.ball_prog, m.shadow_prog, m.solid_prog}) glDeleteProgram(p);
     glDeleteTextures(1, &m.cloth_tex);
     glDeleteTextures(1, &m.wood_tex);
+    glDeleteTextures(1, &m.number_tex);
     m.free_cache();
 }
 
@@ -375,6 +381,11 @@ void Renderer::draw(const FrameView& frame, int width, int height) {
     const GLint u_colour = glGetUniformLocation(m.ball_prog, "u_colour");
     const GLint u_stripe = glGetUniformLocation(m.ball_prog, "u_stripe");
     const GLint u_cue = glGetUniformLocation(m.ball_prog, "u_cue");
+    const GLint u_number = glGetUniformLocation(m.ball_prog, "u_number");
+    glActiveTexture(GL_TEXTURE2);
+    glBindTexture(GL_TEXTURE_2D, m.number_tex);
+    glActiveTexture(GL_TEXTURE0);
+    glUniform1i(glGetUniformLocation(m.ball_prog, "u_numbers"), 2);
     glBindVertexArray(m.quad_vao);
     for (const BallView& b : frame.balls) {
         const glm::mat3 rot = glm::mat3_cast(b.orientation);
@@ -384,6 +395,7 @@ void Renderer::draw(const FrameView& frame, int width, int height) {
         glUniform3fv(u_colour, 1, glm::value_ptr(colour));
         glUniform1i(u_stripe, is_stripe(b.id) ? 1 : 0);
         glUniform1i(u_cue, b.id == 0 ? 1 : 0);
+        glUniform1i(u_number, b.id >= 1 && b.id <= 15 ? b.id : 0);
         glDrawArrays(GL_TRIANGLES, 0, 6);
     }
 

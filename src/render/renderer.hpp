@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -15,6 +16,7 @@
 #include "physics/ball_state.hpp"
 #include "physics/table.hpp"
 #include "render/camera.hpp"
+#include "render/textures.hpp"
 
 namespace render {
 
@@ -58,6 +60,9 @@ struct RenderSettings {
     /// overhead camera is fixed). Used only when the bound framebuffer is an FBO with a
     /// 24-bit depth attachment (OffscreenTarget); otherwise the table is drawn every frame.
     bool cache_table = true;
+    /// TrueType font the ball numbers are rasterized from at start-up; the Renderer's
+    /// constructor throws std::runtime_error when it is missing.
+    std::string number_font = kDefaultNumberFont;
 };
 
 /// Standard ball colours (sRGB, 0–1): 0 cue ball, 1–8 solids, 9–15 stripes of 1–7's colour.

@@ -255,6 +255,8 @@ uniform mat3 u_rotation;      // ball frame -> table frame
 uniform vec3 u_colour;        // sRGB
 uniform int u_stripe;         // 1: a stripe ball (colour band on white)
 uniform int u_cue;            // 1: the cue ball
+uniform int u_number;         // 1-15: the number in the white circles
+uniform sampler2D u_numbers;  // the numbers' atlas, 4 x 4 cells (render::make_number_atlas)
 uniform vec3 u_cloth_colour;  // sRGB, for the reflection of the table
 
 // What the ball's varnish reflects: the lit cloth below, the dark room above, the lamps' discs.
@@ -283,7 +285,9 @@ void main() {
     float c = dot(oc, oc) - u_radius * u_radius;
     float h = b * b - c;
     if (h < 0.0) discard;
-    float t = -b - sqrt(h);
+    // Clamped so that the quad's helper pixels past the silhouette still give finite texture
+    // derivatives for the numbers.
+    float t = -b - sqrt(max(h, 0.0));
     vec3 p = u_eye + t * dir;
     vec3 n = (p - u_centre) / u_radius;
     vec3 local = transpose(u_rotation) * n;
@@ -291,8 +295,12 @@ void main() {
     vec3 white = vec3(0.93, 0.92, 0.86);
     vec3 albedo = u_colour;
     if (u_stripe == 1 && abs(local.z) > 0.48) albedo = white;
-    // The number's white circle, on both sides.
-    if (u_cue == 0 && abs(local.x) > 0.89) albedo = white;
+    // The number's white circle, on both sides, and the number in it: the atlas cell of
+    // u_number spans the circle; on the -x side the digits are mirrored to read from outside.
+    vec2 q = vec2(local.x >= 0.0 ? local.y : -local.y, local.z) * (1.0 / 0.456);
+    vec2 cell = vec2(float(u_number % 4), float(3 - u_number / 4));
+    float ink = texture(u_numbers, (cell + 0.5 + 0.5 * clamp(q, -0.97, 0.97)) * 0.25).r;
+    if (u_cue == 0 && abs(local.x) > 0.89) albedo = mix(white, vec3(0.025, 0.022, 0.02), ink);
     // The cue ball's red dots show its spin.
     if (u_cue == 1 && abs(local.x) > 0.985) albedo = vec3(0.75, 0.05, 0.04);
     albedo = to_linear(albedo);

@@ -2,6 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+
+#include "stb_truetype.h"
 
 namespace render {
 
@@ -72,6 +77,77 @@ TextureData make_wood_texture(int width, int height) {
                 t.pixels[(static_cast<std::size_t>(y) * width + x) * 3 + c] =
                     to_byte(light[c] + (deep[c] - light[c]) * dark);
         }
+    return t;
+}
+
+TextureData make_number_atlas(const std::string& font_path, int cell) {
+    std::ifstream in(font_path, std::ios::binary);
+    const std::vector<unsigned char> font_file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (font_file.empty())
+        throw std::runtime_error("cannot read the ball-number font " + font_path +
+                                 " (Debian: apt-get install fonts-dejavu-core; or set RenderSettings::number_font)");
+    stbtt_fontinfo font;
+    const int offset = stbtt_GetFontOffsetForIndex(font_file.data(), 0);
+    if (offset < 0 || !stbtt_InitFont(&font, font_file.data(), offset))
+        throw std::runtime_error("the ball-number font " + font_path + " is not a TrueType font");
+
+    const int size = kNumberCells * cell;
+    TextureData t{size, size, 1, std::vector<std::uint8_t>(static_cast<std::size_t>(size) * size, 0)};
+    // The digits' height: that of "0" in the font, so every number shares one baseline.
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    stbtt_GetCodepointBox(&font, '0', &x0, &y0, &x1, &y1);
+    const float digit_h = static_cast<float>(y1 - y0);
+    for (int n = 1; n <= 15; ++n) {
+        const std::string text = std::to_string(n);
+        const bool two = text.size() > 1;
+        // Single digits 0.62 of the cell tall; pairs a little smaller and condensed, as on real balls.
+        const float sy = (two ? 0.56f : 0.62f) * static_cast<float>(cell) / digit_h;
+        float sx = sy;
+        // The pen advance of the whole number at scale 1, to centre it (and fit pairs).
+        float width = 0.0f;
+        for (std::size_t k = 0; k < text.size(); ++k) {
+            int adv = 0, lsb = 0;
+            stbtt_GetCodepointHMetrics(&font, text[k], &adv, &lsb);
+            width += static_cast<float>(adv);
+            if (k + 1 < text.size()) width += static_cast<float>(stbtt_GetCodepointKernAdvance(&font, text[k], text[k + 1]));
+        }
+        if (two) sx = std::min(sx * 0.86f, 0.80f * static_cast<float>(cell) / width);
+        const int cx = (n % kNumberCells) * cell, cy = (n / kNumberCells) * cell;  // top-left, rows top down
+        const float baseline = static_cast<float>(cy) + 0.5f * static_cast<float>(cell) + 0.5f * digit_h * sy;
+        float pen = static_cast<float>(cx) + 0.5f * static_cast<float>(cell) - 0.5f * width * sx;
+        std::vector<unsigned char> glyph;
+        for (std::size_t k = 0; k < text.size(); ++k) {
+            int gx0 = 0, gy0 = 0, gx1 = 0, gy1 = 0;
+            const float shift = pen - std::floor(pen);
+            stbtt_GetCodepointBitmapBoxSubpixel(&font, text[k], sx, sy, shift, 0.0f, &gx0, &gy0, &gx1, &gy1);
+            const int gw = gx1 - gx0, gh = gy1 - gy0;
+            if (gw > 0 && gh > 0) {
+                glyph.assign(static_cast<std::size_t>(gw) * static_cast<std::size_t>(gh), 0);
+                stbtt_MakeCodepointBitmapSubpixel(&font, glyph.data(), gw, gh, gw, sx, sy, shift, 0.0f, text[k]);
+                const int ox = static_cast<int>(std::floor(pen)) + gx0;
+                const int oy = static_cast<int>(std::lround(baseline)) + gy0;
+                for (int y = 0; y < gh; ++y)
+                    for (int x = 0; x < gw; ++x) {
+                        const int px = ox + x, py = oy + y;
+                        if (px < cx + 1 || px >= cx + cell - 1 || py < cy + 1 || py >= cy + cell - 1) continue;
+                        std::uint8_t& dst = t.pixels[static_cast<std::size_t>(size - 1 - py) * size + px];
+                        dst = std::max(dst, glyph[static_cast<std::size_t>(y) * gw + x]);
+                    }
+            }
+            int adv = 0, lsb = 0;
+            stbtt_GetCodepointHMetrics(&font, text[k], &adv, &lsb);
+            pen += static_cast<float>(adv) * sx;
+            if (k + 1 < text.size()) pen += static_cast<float>(stbtt_GetCodepointKernAdvance(&font, text[k], text[k + 1])) * sx;
+        }
+        if (n == 6 || n == 9) {
+            // The underline that tells 6 from 9 on a turned ball.
+            const int ux0 = cx + cell * 36 / 100, ux1 = cx + cell * 64 / 100;
+            const int uy0 = static_cast<int>(std::lround(baseline)) + cell * 6 / 100;
+            const int uy1 = uy0 + std::max(2, cell * 7 / 100);
+            for (int py = uy0; py < uy1 && py < cy + cell - 1; ++py)
+                for (int px = ux0; px < ux1; ++px) t.pixels[static_cast<std::size_t>(size - 1 - py) * size + px] = 255;
+        }
+    }
     return t;
 }
 

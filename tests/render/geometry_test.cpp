@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 #include "physics/rack.hpp"
 #include "physics/simulate.hpp"
@@ -84,6 +86,65 @@ TEST(Textures, AreDeterministicAndVaried) {
     EXPECT_GT(*hi - *lo, 40);
     const render::TextureData w = render::make_wood_texture(128, 32);
     EXPECT_EQ(w.pixels.size(), 128u * 32u * 3u);
+}
+
+TEST(NumberAtlas, HoldsEachNumberCentredInItsCell) {
+    const int cell = 64;
+    const render::TextureData a = render::make_number_atlas(render::kDefaultNumberFont, cell);
+    ASSERT_EQ(a.width, render::kNumberCells * cell);
+    ASSERT_EQ(a.height, a.width);
+    ASSERT_EQ(a.channels, 1);
+    for (int n = 0; n < render::kNumberCells * render::kNumberCells; ++n) {
+        const int cx = (n % render::kNumberCells) * cell, cy_top = (n / render::kNumberCells) * cell;
+        double ink = 0.0, mx = 0.0, my = 0.0;
+        for (int y = 0; y < cell; ++y)
+            for (int x = 0; x < cell; ++x) {
+                const int row = a.height - 1 - (cy_top + y);  // rows are stored bottom to top
+                const double v = a.pixels[static_cast<std::size_t>(row) * a.width + cx + x] / 255.0;
+                ink += v;
+                mx += v * x;
+                my += v * y;
+            }
+        if (n == 0 || n > 15) {
+            EXPECT_EQ(ink, 0.0) << "cell " << n;
+            continue;
+        }
+        // Each number covers a fair share of its cell, centred in it, inside the white circle.
+        EXPECT_GT(ink, 0.06 * cell * cell) << n;
+        EXPECT_LT(ink, 0.40 * cell * cell) << n;
+        EXPECT_NEAR(mx / ink, cell / 2.0, 0.12 * cell) << n;
+        EXPECT_NEAR(my / ink, cell / 2.0, 0.12 * cell) << n;
+        for (int y = 0; y < cell; ++y)
+            for (int x = 0; x < cell; ++x) {
+                const double r = std::hypot(x + 0.5 - cell / 2.0, y + 0.5 - cell / 2.0) / (cell / 2.0);
+                const int row = a.height - 1 - (cy_top + y);
+                if (r > 1.0) {
+                    EXPECT_EQ(a.pixels[static_cast<std::size_t>(row) * a.width + cx + x], 0) << n;
+                }
+            }
+    }
+    // 6 and 9 are underlined (so a turned ball still tells them apart), 8 is not.
+    auto ink_below_digits = [&](int n) {
+        const int cx = (n % render::kNumberCells) * cell, cy_top = (n / render::kNumberCells) * cell;
+        int sum = 0;
+        for (int y = cell * 85 / 100; y < cell; ++y)
+            for (int x = 0; x < cell; ++x)
+                sum += a.pixels[static_cast<std::size_t>(a.height - 1 - (cy_top + y)) * a.width + cx + x];
+        return sum;
+    };
+    EXPECT_GT(ink_below_digits(6), 255 * cell / 8);
+    EXPECT_GT(ink_below_digits(9), 255 * cell / 8);
+    EXPECT_EQ(ink_below_digits(8), 0);
+}
+
+TEST(NumberAtlas, MissingFontIsAClearError) {
+    try {
+        (void)render::make_number_atlas("/nonexistent/NoSuchFont.ttf");
+        FAIL() << "expected an exception";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("/nonexistent/NoSuchFont.ttf"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("fonts-dejavu-core"), std::string::npos);
+    }
 }
 
 TEST(BallColours, StripesShareTheSolidsColours) {
