@@ -49,16 +49,21 @@ Scene standard_scene(std::string_view name, const Params& params) {
         s.stroke.speed = cue_speed_for_ball_speed(params, 2.0);
         s.stroke.heading_deg = heading_deg(cue, ghost);
     } else if (name == "long_roll") {
-        // One ball sent round the table off three cushions.
+        // One ball sent round the table: the north, foot and south rails (then, slow, the head
+        // rail), clear of every jaw; at 25° it rattled in the north-east corner's jaws instead.
         s.balls = {ball(0, L / 4, W / 4)};
         s.stroke.speed = cue_speed_for_ball_speed(params, 3.5);
-        s.stroke.heading_deg = 25.0;
+        s.stroke.heading_deg = 31.0;
         s.stroke.top = 0.3;
     } else if (name == "bank") {
-        // An object ball banked off the south rail toward the north side pocket.
-        s.balls = {ball(0, L / 2 - 0.25, W / 2 + 0.05), ball(3, L / 2, W / 2 - 0.2)};
+        // An object ball banked off the south rail into the north side pocket: a full hit from
+        // 0.3 m, at the heading (the middle of a 2.75° window) that makes the bank.
+        const double h = -97.25 * std::numbers::pi / 180.0;
+        const Vec2 object{L / 2 + 0.2, W / 2 - 0.2};
+        const Vec2 cue = object - 0.3 * Vec2{std::cos(h), std::sin(h)};
+        s.balls = {ball(0, cue.x, cue.y), ball(3, object.x, object.y)};
         s.stroke.speed = cue_speed_for_ball_speed(params, 2.5);
-        s.stroke.heading_deg = heading_deg(s.balls[0].pos, s.balls[1].pos - Vec2{0.0, 2 * R * 0.0});
+        s.stroke.heading_deg = -97.25;
     } else {
         throw std::invalid_argument("unknown scene: " + std::string(name));
     }

@@ -20,8 +20,9 @@ struct Scene {
 };
 
 /// "break": a seeded 8-ball rack, cue ball at the head spot, about 9 m/s at the apex ball;
-/// "cut": a 2-ball cut shot into a corner pocket; "long_roll": one ball off three cushions;
-/// "bank": an object ball banked into a side pocket.
+/// "cut": a 2-ball cut shot into a corner pocket; "long_roll": one ball round the table off
+/// three cushions (and a fourth, slowly), touching no jaw; "bank": an object ball banked off
+/// the south rail into the north side pocket. tests/physics/scenes_test.cpp holds them to it.
 std::vector<std::string> standard_scene_names();
 Scene standard_scene(std::string_view name, const Params& params = {});
 
