@@ -1,0 +1,23 @@
+// Refining a ghost-ball heading with the real physics: throw (the object ball is dragged along
+// by the cue ball's slide and spin at contact) and squirt (side spin pushes the cue ball off the
+// stroke line) make the ghost-ball heading miss by a little. A few two-ball simulations
+// (cue ball and object ball only) correct it by the secant method.
+#pragma once
+
+#include <cstdint>
+
+#include "ai/ghost_ball.hpp"
+#include "physics/params.hpp"
+#include "physics/stroke.hpp"
+#include "physics/table.hpp"
+
+namespace ai {
+
+/// The heading (unit: deg) that sends the object ball of `aim` along `aim.object_dir` when the
+/// cue ball at `cue` and the object ball at `object` are alone on the table and the cue ball is
+/// struck with `stroke` (its heading replaced). Adds the simulations it ran to `simulations`.
+double refine_heading(const physics::Table& table, const physics::Params& params,
+                      physics::Vec2 cue, physics::Vec2 object, const Aim& aim,
+                      physics::Stroke stroke, int iterations, std::int64_t& simulations);
+
+}  // namespace ai

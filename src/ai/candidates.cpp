@@ -1,0 +1,200 @@
+#include "ai/candidates.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "ai/aim.hpp"
+#include "ai/ghost_ball.hpp"
+#include "physics/cue_strike.hpp"
+#include "rules/eight_ball.hpp"
+
+namespace ai {
+
+namespace {
+
+using physics::Vec2;
+
+struct Spin {
+    double side, top;
+};
+// Stun, follow, draw, then right and left side: the first `effort.spins` are tried.
+constexpr std::array<Spin, 5> spins{{{0.0, 0.0}, {0.0, 0.3}, {0.0, -0.35}, {0.25, 0.0}, {-0.25, 0.0}}};
+// Multiples of the speed that just gets the object ball to the pocket, most useful first.
+constexpr std::array<double, 5> pot_speed_factors{1.3, 2.1, 1.0, 3.2, 4.6};
+constexpr std::array<double, 5> safety_speeds{0.55, 1.0, 1.7, 2.6, 4.0};  // (unit: m/s)
+constexpr std::array<double, 2> kick_speeds{1.6, 3.2};                    // (unit: m/s)
+constexpr double min_speed = 0.25, max_speed = 8.0;                      // (unit: m/s)
+constexpr double roll_decel = 0.0981;  // μ_roll·g of the default parameters (unit: m/s²)
+constexpr double arrival_speed = 0.35;  // object ball speed wanted at the pocket (unit: m/s)
+
+// The cue speed that gets the object ball of `aim` to its pocket with `arrival_speed`: sliding
+// costs a ball about 2/7 of its speed, rolling μ_roll·g per metre (physics-model.md).
+double base_pot_speed(const physics::Params& params, const Aim& aim) {
+    const double object0 =
+        1.4 * std::sqrt(arrival_speed * arrival_speed + 2.0 * roll_decel * aim.object_distance);
+    const double cue_at_contact = object0 / (0.975 * std::max(std::cos(aim.cut_deg * deg), 0.2));
+    const double cue0 =
+        1.2 * std::sqrt(cue_at_contact * cue_at_contact + 2.0 * roll_decel * aim.cue_distance);
+    return physics::cue_speed_for_ball_speed(params, cue0);
+}
+
+double heading_to(Vec2 from, Vec2 to) {
+    return std::atan2(to.y - from.y, to.x - from.x) / deg;
+}
+
+std::optional<Vec2> spot(bool in_hand, Vec2 cue) {
+    return in_hand ? std::optional<Vec2>(cue) : std::nullopt;
+}
+
+}  // namespace
+
+rules::Call pot_call(const Position& pos, int ball, int pocket) {
+    if (pos.ruleset.game != rules::Game::eight_ball || pos.state.shot == rules::Shot::break_shot ||
+        !rules::call_counts(pos.ruleset.options, pos.state))
+        return rules::Call::nothing();
+    return rules::Call::ball_in(ball, pocket);
+}
+
+rules::Call safety_call(const Position& pos) {
+    if (pos.ruleset.game != rules::Game::eight_ball || pos.state.shot == rules::Shot::break_shot ||
+        !rules::call_counts(pos.ruleset.options, pos.state))
+        return rules::Call::nothing();
+    return rules::Call::safety();
+}
+
+std::vector<Candidate> pot_candidates(const Position& pos, Vec2 cue, bool in_hand,
+                                      const Effort& effort, double sigma_deg,
+                                      std::int64_t& simulations) {
+    const double R = pos.params.ball_radius;
+    struct Ranked {
+        Aim aim;
+        double chance;
+    };
+    std::vector<Ranked> aims;
+    for (int ball : target_balls(pos.ruleset, pos.state))
+        for (int pocket = 0; pocket < 6; ++pocket)
+            if (std::optional<Aim> a = direct_aim(pos.table, R, cue, ball, pocket, pos.state.positions))
+                aims.push_back({*a, aim_chance(*a, R, sigma_deg)});
+    std::stable_sort(aims.begin(), aims.end(),
+                     [](const Ranked& a, const Ranked& b) { return a.chance > b.chance; });
+    if (aims.size() > static_cast<std::size_t>(effort.pot_pairs))
+        aims.resize(static_cast<std::size_t>(effort.pot_pairs));
+
+    std::vector<Candidate> out;
+    for (const Ranked& r : aims) {
+        const Vec2 object = pos.state.positions.at(r.aim.ball);
+        const double base = base_pot_speed(pos.params, r.aim);
+        for (int k = 0; k < std::min<int>(effort.speeds, static_cast<int>(pot_speed_factors.size())); ++k)
+            for (int j = 0; j < std::min<int>(effort.spins, static_cast<int>(spins.size())); ++j) {
+                Candidate c;
+                c.kind = Kind::pot;
+                c.prior = r.chance;
+                c.cue_pos = spot(in_hand, cue);
+                c.call = pot_call(pos, r.aim.ball, r.aim.pocket);
+                c.stroke.speed = std::clamp(base * pot_speed_factors[static_cast<std::size_t>(k)],
+                                            min_speed, max_speed);
+                c.stroke.side = spins[static_cast<std::size_t>(j)].side;
+                c.stroke.top = spins[static_cast<std::size_t>(j)].top;
+                c.stroke.heading_deg =
+                    refine_heading(pos.table, pos.params, cue, object, r.aim, c.stroke, 2, simulations);
+                out.push_back(c);
+            }
+    }
+    return out;
+}
+
+std::vector<Candidate> safety_candidates(const Position& pos, Vec2 cue, bool in_hand,
+                                         const Effort& effort) {
+    const double R = pos.params.ball_radius;
+    std::vector<Candidate> out;
+    const int n = std::max(effort.safety_contacts, 1);
+    for (int ball : target_balls(pos.ruleset, pos.state)) {
+        auto it = pos.state.positions.find(ball);
+        if (it == pos.state.positions.end()) continue;
+        const double d = physics::norm(it->second - cue);
+        if (d <= 2.0 * R) continue;
+        const double centre = heading_to(cue, it->second);
+        for (int i = 0; i < n; ++i) {
+            const double f = n == 1 ? 0.0 : -0.85 + 1.7 * i / (n - 1);
+            const double turn = std::asin(std::clamp(f * 2.0 * R / d, -1.0, 1.0)) / deg;
+            for (int k = 0; k < std::min<int>(effort.safety_speeds, static_cast<int>(safety_speeds.size())); ++k) {
+                Candidate c;
+                c.kind = Kind::safety;
+                c.cue_pos = spot(in_hand, cue);
+                c.call = safety_call(pos);
+                c.stroke.speed = safety_speeds[static_cast<std::size_t>(k)];
+                c.stroke.heading_deg = centre + turn;
+                out.push_back(c);
+            }
+        }
+    }
+    return out;
+}
+
+std::vector<Candidate> kick_candidates(const Position& pos, Vec2 cue, bool in_hand,
+                                       const Effort& effort) {
+    (void)pos;
+    std::vector<Candidate> out;
+    const int n = std::max(effort.sweep_headings, 8);
+    for (int i = 0; i < n; ++i)
+        for (double speed : kick_speeds) {
+            Candidate c;
+            c.kind = Kind::kick;
+            c.cue_pos = spot(in_hand, cue);
+            c.stroke.speed = speed;
+            c.stroke.heading_deg = 360.0 * i / n;
+            out.push_back(c);
+        }
+    return out;
+}
+
+std::vector<Candidate> break_candidates(const Position& pos) {
+    const double R = pos.params.ball_radius;
+    const double W = pos.table.width();
+    // The apex ball: the object ball nearest the head cushion.
+    Vec2 apex{pos.table.length() * 0.75, W / 2.0};
+    double best_x = 1e9;
+    for (const auto& [id, p] : pos.state.positions)
+        if (id != 0 && p.x < best_x) {
+            best_x = p.x;
+            apex = p;
+        }
+    std::vector<Candidate> out;
+    const double x = pos.ruleset.table.head_string_x() - 2.0 * R;
+    for (double dy : {0.0, 0.15, -0.15, 0.32, -0.32}) {
+        const Vec2 cue{x, W / 2.0 + dy};
+        if (!free_spot(pos, cue)) continue;
+        const double d = physics::norm(apex - cue);
+        for (double f : {0.0, 0.25})
+            for (double speed : {6.5, 8.0, 9.5}) {
+                Candidate c;
+                c.kind = Kind::break_shot;
+                c.cue_pos = cue;
+                c.stroke.speed = speed;
+                c.stroke.top = -0.1;  // a touch of draw keeps the cue ball off the rails
+                const double sign = dy >= 0.0 ? 1.0 : -1.0;
+                c.stroke.heading_deg =
+                    heading_to(cue, apex) + sign * std::asin(f * 2.0 * R / d) / deg;
+                out.push_back(c);
+            }
+    }
+    return out;
+}
+
+std::vector<Candidate> push_out_candidates(const Position& pos, Vec2 cue) {
+    (void)pos;
+    std::vector<Candidate> out;
+    for (int i = 0; i < 24; ++i)
+        for (double speed : {0.35, 0.7}) {
+            Candidate c;
+            c.kind = Kind::push_out;
+            c.stroke.speed = speed;
+            c.stroke.heading_deg = 15.0 * i;
+            (void)cue;
+            out.push_back(c);
+        }
+    return out;
+}
+
+}  // namespace ai

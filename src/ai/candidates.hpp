@@ -1,0 +1,49 @@
+// The strokes the AI considers, before any is judged:
+//   pots      ghost-ball aims for every target ball and pocket, the easiest first, each at a few
+//             speeds and spins, the heading refined for throw and squirt (aim.hpp);
+//   safeties  contacts across each legal ball (full to thin) at a few speeds, called "safety";
+//   kicks     a sweep of headings all round (banks, kicks, combinations, escapes from a snooker);
+//             the call comes from what the stroke does when played without noise;
+//   breaks    from a few spots behind the head string, full on the apex ball, hard;
+//   push-outs (9-ball) soft rolls in every direction.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "ai/level.hpp"
+#include "ai/position.hpp"
+#include "physics/stroke.hpp"
+#include "rules/game_state.hpp"
+
+namespace ai {
+
+enum class Kind { pot, safety, kick, break_shot, push_out };
+
+struct Candidate {
+    Kind kind = Kind::pot;
+    physics::Stroke stroke;
+    rules::Call call;                      ///< kicks: set after the noiseless simulation
+    std::optional<physics::Vec2> cue_pos;  ///< with ball in hand: where the cue ball goes
+    double prior = 0.0;                    ///< pots: the analytic chance (ghost_ball.hpp)
+};
+
+/// The call a shot needs in `s`: the ball and pocket when calls count (8-ball after the break),
+/// else nothing.
+rules::Call pot_call(const Position& pos, int ball, int pocket);
+/// "safety" when calls count, else nothing.
+rules::Call safety_call(const Position& pos);
+
+/// Pots from the cue ball at `cue`. Adds the refinement simulations to `simulations`.
+std::vector<Candidate> pot_candidates(const Position& pos, physics::Vec2 cue, bool in_hand,
+                                      const Effort& effort, double sigma_deg,
+                                      std::int64_t& simulations);
+std::vector<Candidate> safety_candidates(const Position& pos, physics::Vec2 cue, bool in_hand,
+                                         const Effort& effort);
+std::vector<Candidate> kick_candidates(const Position& pos, physics::Vec2 cue, bool in_hand,
+                                       const Effort& effort);
+std::vector<Candidate> break_candidates(const Position& pos);
+std::vector<Candidate> push_out_candidates(const Position& pos, physics::Vec2 cue);
+
+}  // namespace ai

@@ -1,0 +1,128 @@
+#include "ai/evaluate.hpp"
+
+#include <algorithm>
+
+#include "ai/ghost_ball.hpp"
+#include "ai/parallel.hpp"
+#include "ai/table_value.hpp"
+#include "game/session.hpp"
+#include "game/stroke_noise.hpp"
+#include "physics/simulate.hpp"
+#include "rules/eight_ball.hpp"
+
+namespace ai {
+
+namespace {
+
+constexpr double truncated_value = 0.25;  // a shot the engine could not finish: avoid it
+
+// The first ball the stroke pockets that scores for the shooter, as a call (kicks, banks,
+// combinations): the call that would have made the noiseless stroke legal.
+rules::Call call_from_events(const Position& pos, const std::vector<physics::Event>& events) {
+    if (pos.ruleset.game != rules::Game::eight_ball) return rules::Call::nothing();
+    const rules::GameState& s = pos.state;
+    for (const physics::Event& e : events) {
+        if (e.type != physics::EventType::pocket) continue;
+        const int ball = e.balls[0].id;
+        if (ball == 0) continue;
+        const bool scores = legal_first(pos.ruleset, s, ball);
+        if (scores) return pot_call(pos, ball, e.pocket);
+    }
+    return safety_call(pos);
+}
+
+}  // namespace
+
+std::vector<NoiseDraw> noise_draws(std::uint64_t seed, int n) {
+    physics::SplitMix64 rng(seed);
+    std::vector<NoiseDraw> draws(static_cast<std::size_t>(std::max(n, 0)));
+    for (NoiseDraw& d : draws) {
+        d.heading = game::standard_normal(rng);
+        d.elevation = game::standard_normal(rng);
+        d.speed = game::standard_normal(rng);
+        d.side = game::standard_normal(rng);
+        d.top = game::standard_normal(rng);
+    }
+    return draws;
+}
+
+physics::Stroke with_draw(const physics::Stroke& stroke, const NoiseDraw& d, double scale) {
+    if (scale == 0.0) return stroke;
+    const game::StrokeNoise sigma;
+    physics::Stroke s = stroke;
+    s.heading_deg += scale * sigma.heading_deg * d.heading;
+    s.elevation_deg += scale * sigma.elevation_deg * d.elevation;
+    s.speed += scale * sigma.speed * d.speed;
+    s.side += scale * sigma.offset * d.side;
+    s.top += scale * sigma.offset * d.top;
+    s.elevation_deg = std::clamp(s.elevation_deg, 0.0, 90.0);
+    s.speed = std::clamp(s.speed, 0.0, game::max_stroke_speed);
+    s.side = std::clamp(s.side, -1.0, 1.0);
+    s.top = std::clamp(s.top, -1.0, 1.0);
+    return s;
+}
+
+Trial Evaluator::play(const Candidate& c, const physics::Stroke& stroke, bool assign_call,
+                      rules::Call* call) const {
+    rules::GameState s = pos_.state;
+    if (c.cue_pos) s.positions[0] = *c.cue_pos;
+    const physics::Vec2 cue = s.positions.at(0);
+    if (c.kind == Kind::push_out) s.shot = rules::Shot::push_out;
+    const std::vector<physics::BallState> balls = layout(s, cue);
+    const physics::Shot shot = physics::simulate(pos_.table, pos_.params, balls, &stroke);
+    if (assign_call && call) *call = call_from_events(pos_, shot.events());
+    s.call = call ? *call : c.call;
+    Trial t;
+    if (shot.truncated()) {
+        t.value = truncated_value;
+        return t;
+    }
+    const rules::Verdict v = rules::judge(pos_.ruleset, s, shot.events());
+    const rules::Player me = s.shooter;
+    t.value = verdict_value(pos_, s, v, sigma_deg_);
+    t.foul = v.foul;
+    const bool won = v.game_over && v.winner == me;
+    const bool lost = v.game_over && v.winner != me;
+    const bool stays = !v.game_over && ((v.choice && v.choice->by == me) ||
+                                        (!v.choice && v.next_shooter == me));
+    const bool pot_like =
+        c.kind == Kind::pot || c.kind == Kind::break_shot || (c.kind == Kind::kick && s.call.is_ball());
+    t.success = pot_like ? (won || stays) : (!v.foul && !lost);
+    return t;
+}
+
+Trial Evaluator::nominal(Candidate& c) const {
+    if (c.kind == Kind::kick) return play(c, c.stroke, true, &c.call);
+    return play(c, c.stroke, false, nullptr);
+}
+
+Trial Evaluator::trial(const Candidate& c, const NoiseDraw& draw) const {
+    return play(c, with_draw(c.stroke, draw, scale_), false, nullptr);
+}
+
+std::int64_t score_under_noise(const Evaluator& eval, const std::vector<Candidate>& candidates,
+                               const std::vector<std::size_t>& which,
+                               const std::vector<NoiseDraw>& draws, std::size_t first,
+                               std::size_t count, std::vector<Score>& scores, int workers) {
+    parallel_for(which.size(), workers, [&](std::size_t k) {
+        const std::size_t i = which[k];
+        Score& s = scores[i];
+        double value = s.value * s.samples, success = s.success * s.samples;
+        for (std::size_t d = first; d < first + count && d < draws.size(); ++d) {
+            const Trial t = eval.trial(candidates[i], draws[d]);
+            value += t.value;
+            success += t.success ? 1.0 : 0.0;
+            ++s.samples;
+        }
+        if (s.samples > 0) {
+            s.value = value / s.samples;
+            s.success = success / s.samples;
+        }
+    });
+    std::int64_t sims = 0;
+    for (std::size_t k = 0; k < which.size(); ++k)
+        sims += static_cast<std::int64_t>(std::min(count, draws.size() - std::min(first, draws.size())));
+    return sims;
+}
+
+}  // namespace ai

@@ -1,0 +1,74 @@
+// Judging a candidate with the real physics and the rules: simulate the stroke on a copy of the
+// table (physics::simulate), judge the events (rules::judge), and value the verdict for the
+// shooter (table_value.hpp). Under noise, the same candidate is played with several draws of the
+// execution-noise model (game::StrokeNoise at the planned scale); every candidate sees the same
+// draws (common random numbers), so their means compare fairly.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "ai/candidates.hpp"
+#include "ai/position.hpp"
+#include "physics/stroke.hpp"
+
+namespace ai {
+
+/// One draw of the execution noise: a standard normal deviate per stroke component.
+struct NoiseDraw {
+    double heading = 0.0, elevation = 0.0, speed = 0.0, side = 0.0, top = 0.0;
+};
+
+/// `n` draws from a stream seeded with `seed` (the AI's own; it never sees the game's).
+std::vector<NoiseDraw> noise_draws(std::uint64_t seed, int n);
+
+/// The stroke with the draw's errors at `scale` × the standard σ (game/stroke_noise.hpp), kept
+/// within the bounds of a stroke, as the game does.
+physics::Stroke with_draw(const physics::Stroke& stroke, const NoiseDraw& draw, double scale);
+
+/// One simulated play of a candidate.
+struct Trial {
+    double value = 0.0;    ///< what the outcome is worth to the shooter (0 lost … 1 won)
+    bool success = false;  ///< pots: the shooter stays at the table (or wins); safeties: no foul
+    bool foul = false;
+};
+
+/// The mean of a candidate's trials.
+struct Score {
+    double value = 0.0;
+    double success = 0.0;
+    int samples = 0;
+    bool foul = false;  ///< the noiseless stroke fouls
+};
+
+class Evaluator {
+  public:
+    /// `scale`: the execution noise the shooter plans for; `sigma_deg`: the heading σ of the
+    /// shot model used to value the positions left.
+    Evaluator(const Position& pos, double scale, double sigma_deg)
+        : pos_(pos), scale_(scale), sigma_deg_(sigma_deg) {}
+
+    /// Plays the candidate without noise; a kick gets its call from what it pockets.
+    Trial nominal(Candidate& c) const;
+    /// Plays the candidate with one noise draw.
+    Trial trial(const Candidate& c, const NoiseDraw& draw) const;
+
+    double scale() const { return scale_; }
+
+  private:
+    Trial play(const Candidate& c, const physics::Stroke& stroke, bool assign_call,
+               rules::Call* call) const;
+
+    const Position& pos_;
+    double scale_;
+    double sigma_deg_;
+};
+
+/// Scores each candidate of `which` in `candidates` with the draws [first, first + count),
+/// adding to `scores` (running means); `workers` threads. Returns the simulations run.
+std::int64_t score_under_noise(const Evaluator& eval, const std::vector<Candidate>& candidates,
+                               const std::vector<std::size_t>& which,
+                               const std::vector<NoiseDraw>& draws, std::size_t first,
+                               std::size_t count, std::vector<Score>& scores, int workers);
+
+}  // namespace ai

@@ -1,0 +1,57 @@
+// Ghost-ball geometry and the analytic chance of a direct pot. The cue ball must arrive where the
+// "ghost" ball touches the object ball on the line from the pocket's aim point through the object
+// ball; the chance of potting follows from how the stroke's heading error grows on the way
+// (a cue-ball offset at contact of d_c·δ turns the object ball by d_c·δ / (2R cos φ)) and how
+// wide the pocket looks from the object ball. The physics refines the heading (aim.hpp); this
+// model only ranks shots and values positions.
+#pragma once
+
+#include <map>
+#include <optional>
+
+#include "physics/table.hpp"
+#include "physics/vec.hpp"
+
+namespace ai {
+
+/// A direct pot: cue ball → ghost ball → object ball → pocket.
+struct Aim {
+    int ball = 0;
+    int pocket = 0;
+    physics::Vec2 aim_point;      ///< where the object ball's centre is sent (unit: m)
+    physics::Vec2 ghost;          ///< the cue ball's centre at contact (unit: m)
+    physics::Vec2 object_dir;     ///< unit direction the object ball must take
+    double heading_deg = 0.0;     ///< cue ball → ghost (unit: deg)
+    double cut_deg = 0.0;         ///< angle between the cue ball's path and the object's (unit: deg)
+    double cue_distance = 0.0;    ///< cue ball to ghost (unit: m)
+    double object_distance = 0.0; ///< object ball to the aim point (unit: m)
+    double tolerance = 0.0;       ///< half-angle of the pocket seen from the object ball (unit: rad)
+};
+
+/// Effective σ of the cue ball's heading at execution-noise scale 1: the model's heading σ with
+/// the squirt of the tip-offset σ (0.125° and about 0.17°) (unit: deg).
+inline constexpr double heading_sigma_deg = 0.21;
+/// The least σ the shot model assumes (a noiseless player still prefers easy shots) (unit: deg).
+inline constexpr double min_model_sigma_deg = 0.08;
+
+inline constexpr double deg = 3.14159265358979323846 / 180.0;
+
+/// Whether the straight path of a ball's centre from a to b passes at least 2R − slack from
+/// every ball of `balls` except `skip1` and `skip2`.
+bool path_clear(physics::Vec2 a, physics::Vec2 b, const std::map<int, physics::Vec2>& balls,
+                int skip1, int skip2, double radius);
+
+/// The direct pot of `ball` into `pocket` from the cue ball at `cue`; empty when the pocket
+/// cannot be reached that way (path blocked, cut over 80°, pocket facing away, ghost ball off
+/// the table). `balls` holds the object balls.
+std::optional<Aim> direct_aim(const physics::Table& table, double radius, physics::Vec2 cue,
+                              int ball, int pocket, const std::map<int, physics::Vec2>& balls);
+
+/// The object ball's path to the pocket alone (for a ball in hand): the aim with no cue ball yet.
+std::optional<Aim> object_path(const physics::Table& table, double radius, int ball, int pocket,
+                               const std::map<int, physics::Vec2>& balls);
+
+/// The chance of potting `aim` with an execution heading σ of `sigma_deg`.
+double aim_chance(const Aim& aim, double radius, double sigma_deg);
+
+}  // namespace ai

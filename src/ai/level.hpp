@@ -1,0 +1,30 @@
+// The five levels of the computer opponent: how hard it searches and how well it strokes.
+// Level 1 is a beginner (4× the execution noise, a small search), level 5 the strongest (1×, the
+// largest search that fits about a second per decision on two cores). docs/ai.md.
+#pragma once
+
+namespace ai {
+
+inline constexpr int min_level = 1;
+inline constexpr int max_level = 5;
+
+/// Search effort of one level. Counts are per decision unless stated.
+struct Effort {
+    double noise_multiplier = 1.0;  ///< the player's own execution noise, × the game's scale (unit: 1)
+    int pot_pairs = 6;        ///< (ball, pocket) pairs tried, the easiest first
+    int speeds = 3;           ///< speeds per aim
+    int spins = 3;            ///< spins per aim (follow, stun, draw, then side)
+    int safety_speeds = 3;    ///< speeds per safety contact
+    int safety_contacts = 5;  ///< contact points across each legal ball for safeties
+    int sweep_headings = 72;  ///< headings of the kick/bank sweep (only when nothing is simpler)
+    int shortlist = 12;       ///< candidates evaluated under noise, the best nominal ones
+    int samples = 12;         ///< noisy simulations per shortlisted candidate
+    int finalists = 3;        ///< the best few get `samples` more
+    int placements = 3;       ///< ball-in-hand spots searched in full
+    int break_samples = 6;    ///< noisy simulations per break candidate
+};
+
+/// The effort of `level` (clamped to 1–5).
+Effort effort_for_level(int level);
+
+}  // namespace ai

@@ -1,0 +1,103 @@
+#include "ai/placement.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <utility>
+
+#include "ai/ghost_ball.hpp"
+
+namespace ai {
+
+namespace {
+
+using physics::Vec2;
+
+struct Spot {
+    Vec2 pos;
+    double score;
+    int pair;  // ball × 6 + pocket of the shot it is for; −1 for none
+};
+
+Vec2 rotate(Vec2 v, double a) {
+    return {v.x * std::cos(a) - v.y * std::sin(a), v.x * std::sin(a) + v.y * std::cos(a)};
+}
+
+}  // namespace
+
+std::vector<Vec2> cue_spots(const Position& pos, int count, double sigma_deg) {
+    const double R = pos.params.ball_radius;
+    const double L = pos.table.length(), W = pos.table.width();
+    const bool kitchen = pos.state.cue_ball == rules::CueBall::in_hand_kitchen;
+    std::vector<Spot> spots;
+    auto consider = [&](Vec2 p) {
+        if (!free_spot(pos, p)) return;
+        double best = 0.0;
+        int pair = -1;
+        for (int ball : target_balls(pos.ruleset, pos.state))
+            for (int pocket = 0; pocket < 6; ++pocket)
+                if (std::optional<Aim> a = direct_aim(pos.table, R, p, ball, pocket, pos.state.positions)) {
+                    // A slight cut lets the cue ball go on to the next shot.
+                    const double bias = a->cut_deg > 8.0 && a->cut_deg < 35.0 ? 0.02 : 0.0;
+                    const double q = aim_chance(*a, R, sigma_deg) + bias;
+                    if (q > best) {
+                        best = q;
+                        pair = ball * 6 + pocket;
+                    }
+                }
+        spots.push_back({p, best, pair});
+    };
+    for (int ball : target_balls(pos.ruleset, pos.state))
+        for (int pocket = 0; pocket < 6; ++pocket) {
+            std::optional<Aim> path = object_path(pos.table, R, ball, pocket, pos.state.positions);
+            if (!path) continue;
+            const Vec2 back = -1.0 * path->object_dir;
+            for (double d : {0.18, 0.32, 0.55})
+                for (double turn : {0.0, 0.35, -0.35, 0.7, -0.7})
+                    consider(path->ghost + d * rotate(back, turn));
+        }
+    if (kitchen) {
+        const double x_max = pos.ruleset.table.head_string_x() - R;
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 7; ++j)
+                consider({R + 0.01 + (x_max - R - 0.01) * (i + 0.5) / 4.0,
+                          R + 0.01 + (W - 2.0 * R - 0.02) * (j + 0.5) / 7.0});
+    }
+    std::stable_sort(spots.begin(), spots.end(),
+                     [](const Spot& a, const Spot& b) { return a.score > b.score; });
+
+    std::vector<Vec2> out;
+    std::set<int> pairs;
+    for (const Spot& s : spots)  // one spot per shot first
+        if (s.score > 0.0 && static_cast<int>(out.size()) < count && pairs.insert(s.pair).second)
+            out.push_back(s.pos);
+    for (const Spot& s : spots)
+        if (s.score > 0.0 && static_cast<int>(out.size()) < count &&
+            std::find(out.begin(), out.end(), s.pos) == out.end())
+            out.push_back(s.pos);
+    if (!out.empty()) return out;
+
+    // Nothing to pot: near a legal ball, for a safety.
+    for (int ball : target_balls(pos.ruleset, pos.state)) {
+        auto it = pos.state.positions.find(ball);
+        if (it == pos.state.positions.end()) continue;
+        for (int k = 0; k < 8 && static_cast<int>(out.size()) < count; ++k) {
+            const Vec2 p = it->second + 0.3 * rotate({1.0, 0.0}, k * 0.7853981633974483);
+            if (free_spot(pos, p)) out.push_back(p);
+        }
+    }
+    if (kitchen && out.empty())
+        for (const Spot& s : spots) {
+            out.push_back(s.pos);
+            if (static_cast<int>(out.size()) >= count) break;
+        }
+    for (double x = 2.0 * R; out.empty() && x < L; x += R)
+        for (double y = 2.0 * R; y < W - R; y += R)
+            if (free_spot(pos, {x, y})) {
+                out.push_back({x, y});
+                break;
+            }
+    return out;
+}
+
+}  // namespace ai

@@ -1,0 +1,207 @@
+#include "ai/planner.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "ai/candidates.hpp"
+#include "ai/evaluate.hpp"
+#include "ai/ghost_ball.hpp"
+#include "ai/level.hpp"
+#include "ai/parallel.hpp"
+#include "ai/placement.hpp"
+#include "ai/table_value.hpp"
+#include "rules/eight_ball.hpp"
+
+namespace ai {
+
+namespace {
+
+constexpr double good_enough = 0.5;  // below this nominal value, kicks and banks are tried too
+
+struct Search {
+    const Position& pos;
+    Effort effort;
+    Evaluator eval;
+    std::vector<NoiseDraw> draws;
+    int workers;
+    std::int64_t simulations = 0;
+};
+
+double normalized(double heading_deg) {
+    double h = std::fmod(heading_deg, 360.0);
+    if (h < 0.0) h += 360.0;
+    return h;
+}
+
+// Noiseless play of candidates [from, end): their nominal scores.
+void score_nominal(Search& s, std::vector<Candidate>& cands, std::vector<Score>& nominal,
+                   std::size_t from) {
+    nominal.resize(cands.size());
+    parallel_for(cands.size() - from, s.workers, [&](std::size_t k) {
+        const std::size_t i = from + k;
+        const Trial t = s.eval.nominal(cands[i]);
+        nominal[i] = Score{t.value, t.success ? 1.0 : 0.0, 1, t.foul};
+    });
+    s.simulations += static_cast<std::int64_t>(cands.size() - from);
+}
+
+// The indices of the `n` best of `scores` among `which` (ties: the earlier index).
+std::vector<std::size_t> best_of(const std::vector<Score>& scores, std::vector<std::size_t> which,
+                                 std::size_t n) {
+    std::stable_sort(which.begin(), which.end(), [&](std::size_t a, std::size_t b) {
+        return scores[a].value > scores[b].value;
+    });
+    if (which.size() > n) which.resize(n);
+    return which;
+}
+
+std::vector<std::size_t> all_indices(std::size_t n) {
+    std::vector<std::size_t> v(n);
+    std::iota(v.begin(), v.end(), std::size_t{0});
+    return v;
+}
+
+// Shortlist under noise, then more draws for the finalists; returns the index of the best.
+std::size_t choose_under_noise(Search& s, const std::vector<Candidate>& cands,
+                               const std::vector<Score>& nominal, std::vector<Score>& noisy,
+                               std::size_t shortlist) {
+    std::vector<std::size_t> list = best_of(nominal, all_indices(cands.size()), shortlist);
+    noisy.assign(cands.size(), Score{});
+    const std::size_t n = s.eval.scale() == 0.0 ? 1 : static_cast<std::size_t>(s.effort.samples);
+    s.simulations += score_under_noise(s.eval, cands, list, s.draws, 0, n, noisy, s.workers);
+    if (s.eval.scale() > 0.0 && s.effort.finalists > 1) {
+        std::vector<std::size_t> finals =
+            best_of(noisy, list, static_cast<std::size_t>(s.effort.finalists));
+        s.simulations += score_under_noise(s.eval, cands, finals, s.draws, n, n, noisy, s.workers);
+        list = finals;
+    }
+    return best_of(noisy, list, 1).front();
+}
+
+game::Decision decision_of(const Candidate& c) {
+    game::Decision d;
+    d.cue_pos = c.cue_pos;
+    d.call = c.call;
+    d.push_out = c.kind == Kind::push_out;
+    d.stroke = c.stroke;
+    d.stroke.heading_deg = normalized(c.stroke.heading_deg);
+    return d;
+}
+
+Plan plan_choice(const Position& pos, double sigma_deg) {
+    Plan p;
+    const rules::Choice& c = *pos.choice;
+    double best = -1.0;
+    for (rules::ChoiceOption o : c.options) {
+        const double v = option_value(pos, pos.state, o, c.by, sigma_deg);
+        if (v > best) {
+            best = v;
+            p.decision.choice = o;
+        }
+    }
+    p.expected_success = best;
+    return p;
+}
+
+Plan plan_break(Search& s) {
+    std::vector<Candidate> cands = break_candidates(s.pos);
+    std::vector<Score> scores(cands.size());
+    const std::size_t n =
+        s.eval.scale() == 0.0 ? 1 : static_cast<std::size_t>(s.effort.break_samples);
+    s.simulations +=
+        score_under_noise(s.eval, cands, all_indices(cands.size()), s.draws, 0, n, scores, s.workers);
+    const std::size_t best = best_of(scores, all_indices(cands.size()), 1).front();
+    Plan p;
+    p.decision = decision_of(cands[best]);
+    p.expected_success = scores[best].success;
+    p.simulations = s.simulations;
+    return p;
+}
+
+}  // namespace
+
+double planned_scale(const PlanSettings& settings) {
+    return settings.noise * effort_for_level(settings.level).noise_multiplier;
+}
+
+Plan plan(const Position& pos, const PlanSettings& settings, std::uint64_t seed) {
+    const Effort effort = effort_for_level(settings.level);
+    const double scale = planned_scale(settings);
+    const double sigma_deg = heading_sigma_deg * scale;
+    if (pos.choice) return plan_choice(pos, sigma_deg);
+
+    Search s{pos, effort, Evaluator(pos, scale, sigma_deg),
+             noise_draws(seed, 2 * std::max(effort.samples, effort.break_samples)),
+             std::max(settings.workers, 1)};
+    if (pos.state.shot == rules::Shot::break_shot) return plan_break(s);
+
+    const bool in_hand = cue_in_hand(pos.state);
+    std::vector<physics::Vec2> spots;
+    if (in_hand)
+        spots = cue_spots(pos, effort.placements, sigma_deg);
+    else
+        spots = {pos.state.positions.at(0)};
+
+    std::vector<Candidate> cands;
+    for (physics::Vec2 cue : spots) {
+        std::vector<Candidate> pots = pot_candidates(pos, cue, in_hand, effort, sigma_deg, s.simulations);
+        std::vector<Candidate> safe = safety_candidates(pos, cue, in_hand, effort);
+        cands.insert(cands.end(), pots.begin(), pots.end());
+        cands.insert(cands.end(), safe.begin(), safe.end());
+    }
+    std::vector<Score> nominal;
+    score_nominal(s, cands, nominal, 0);
+    const auto legal_best = [&] {
+        double best = -1.0;
+        for (const Score& sc : nominal)
+            if (!sc.foul) best = std::max(best, sc.value);
+        return best;
+    };
+    if (legal_best() < good_enough) {
+        const std::size_t from = cands.size();
+        for (physics::Vec2 cue : spots) {
+            std::vector<Candidate> kicks = kick_candidates(pos, cue, in_hand, effort);
+            cands.insert(cands.end(), kicks.begin(), kicks.end());
+            if (in_hand) break;  // one spot is enough for a sweep
+        }
+        score_nominal(s, cands, nominal, from);
+    }
+    if (cands.empty()) {  // cannot happen with a legal ball on the table; be safe anyway
+        Candidate c;
+        c.kind = Kind::safety;
+        c.cue_pos = in_hand ? std::optional<physics::Vec2>(spots.front()) : std::nullopt;
+        c.call = safety_call(pos);
+        c.stroke.speed = 1.5;
+        cands.push_back(c);
+        nominal.push_back(Score{});
+    }
+
+    std::vector<Score> noisy;
+    const std::size_t best =
+        choose_under_noise(s, cands, nominal, noisy, static_cast<std::size_t>(effort.shortlist));
+    Candidate chosen = cands[best];
+    double chosen_value = noisy[best].value, chosen_success = noisy[best].success;
+
+    if (rules::push_out_allowed(pos.ruleset.game, pos.state) && chosen_value < good_enough) {
+        std::vector<Candidate> pushes = push_out_candidates(pos, pos.state.positions.at(0));
+        std::vector<Score> push_nominal;
+        score_nominal(s, pushes, push_nominal, 0);
+        std::vector<Score> push_noisy;
+        const std::size_t p = choose_under_noise(s, pushes, push_nominal, push_noisy,
+                                                 static_cast<std::size_t>(effort.shortlist / 2 + 1));
+        if (push_noisy[p].value > chosen_value) {
+            chosen = pushes[p];
+            chosen_value = push_noisy[p].value;
+            chosen_success = push_noisy[p].success;
+        }
+    }
+
+    Plan out;
+    out.decision = decision_of(chosen);
+    out.expected_success = chosen_success;
+    out.simulations = s.simulations;
+    return out;
+}
+
+}  // namespace ai

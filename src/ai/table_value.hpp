@@ -1,0 +1,43 @@
+// The value of a position for the player at the table: the chance of his best next shot (one shot
+// ahead, from the analytic model of ghost_ball.hpp), turned into a rough chance of winning.
+#pragma once
+
+#include <optional>
+
+#include "ai/ghost_ball.hpp"
+#include "ai/position.hpp"
+#include "rules/verdict.hpp"
+
+namespace ai {
+
+/// The chance of the best direct pot for the shooter of `s` (his target balls into any pocket);
+/// with ball in hand, from the best spot found for it. 0 when nothing is on.
+double best_shot_chance(const Position& base, const rules::GameState& s, double sigma_deg);
+
+/// The best direct pot from the cue ball at `cue`, if any is on, and its chance.
+struct BestAim {
+    Aim aim;
+    double chance = 0.0;
+};
+std::optional<BestAim> best_aim(const Position& base, const rules::GameState& s,
+                                physics::Vec2 cue, double sigma_deg);
+
+/// A rough chance of winning for the player at the table whose best shot has chance `q`: with
+/// nothing on he plays safe and the game is about even; with a sure shot he is well ahead.
+inline double table_value(double q) {
+    return 0.5 + 0.45 * q;
+}
+/// What each ball pocketed adds for the shooter who stays at the table (progress), up to two.
+inline constexpr double progress_bonus = 0.02;
+
+/// What the rules' option `option` is worth to `chooser` (a rough chance of winning), given the
+/// state that the first option leads to.
+double option_value(const Position& base, const rules::GameState& first_option_state,
+                    rules::ChoiceOption option, rules::Player chooser, double sigma_deg);
+
+/// What a verdict is worth to `me` (the shooter of the shot from `before`): 1 won, 0 lost, else
+/// the value of the table to whoever has it next (with a bonus for balls pocketed when it is me).
+double verdict_value(const Position& base, const rules::GameState& before, const rules::Verdict& v,
+                     double sigma_deg);
+
+}  // namespace ai
