@@ -51,7 +51,8 @@ GameReport play_game(Session& s, const std::array<Player*, 2>& seats, const Play
         s.set_call(d.call);
         if (d.push_out) s.set_push_out(true);
         const std::size_t on_table = s.state().on_table.size();
-        const ShotRecord& r = s.play(with_noise(d.stroke, noise, noise_rng));
+        const double scale = noise * seats[rules::index(p)]->execution_noise();
+        const ShotRecord& r = s.play(with_noise(d.stroke, scale, noise_rng));
         ++report.shots;
         if (r.verdict.foul) ++report.fouls;
         if (on_shot && s.phase() != Phase::choose) on_shot(s, r);

@@ -39,7 +39,8 @@ using ShotObserver = std::function<void(const Session&, const ShotRecord&)>;
 using TurnObserver = std::function<void(const Session&)>;
 
 /// Plays the session's current game to its end. `seats[index(p)]` decides for player p. Every
-/// stroke gets execution noise of scale `noise` from a stream seeded with `noise_seed`.
+/// stroke gets execution noise of scale `noise` × its player's execution_noise() from a stream
+/// seeded with `noise_seed`.
 GameReport play_game(Session& session, const std::array<Player*, 2>& seats,
                      const PlayLimits& limits = {}, double noise = 0.0,
                      std::uint64_t noise_seed = 0, const ShotObserver& on_shot = {},

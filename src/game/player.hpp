@@ -31,6 +31,9 @@ class Player {
     /// The decision for the session's current phase (choose, place_cue_ball or shoot); the
     /// session's to_act() is this player.
     virtual Decision decide(const Session& session) = 0;
+    /// The player's own execution noise, as a multiple of the game's noise scale (the AI's
+    /// levels: 4 at level 1 down to 1 at level 5). play_game strokes with scale × this.
+    virtual double execution_noise() const { return 1.0; }
 };
 
 }  // namespace game
