@@ -163,6 +163,98 @@ TEST(Session, IllegalBreakOffersAChoiceAndReracks) {
     expect_consistent(s);
 }
 
+// A break (cue ball in hand in the kitchen) at a hand-made table: the 8 lies in front of the N
+// side pocket, outside the kitchen, and three balls lie near the foot cushion.
+TableState eight_by_the_side_pocket() {
+    TableState t;
+    t.shot = "break";
+    t.cue_ball = "in_hand_kitchen";
+    t.balls = {{8, {L / 2.0 - 0.2, W - 0.3}}, {1, {2.2, 0.3}}, {10, {2.2, 0.6}}, {12, {2.2, 0.9}}};
+    return t;
+}
+
+TEST(Session, EightOnTheBreakOffersSpotOrRebreakToTheBreaker) {
+    Session s = session_with(config_for(Game::eight_ball), eight_by_the_side_pocket());
+    ASSERT_EQ(s.phase(), Phase::place_cue_ball);
+    EXPECT_EQ(s.ball_in_hand(), rules::BallInHand::kitchen);
+    // The cue ball 0.85 m behind the 8 on the line from the N pocket through it.
+    const physics::Vec2 eight = s.state().positions.at(8);
+    const physics::Vec2 mouth{L / 2.0, W};
+    const physics::Vec2 dir = (1.0 / physics::norm(mouth - eight)) * (mouth - eight);
+    const physics::Vec2 cue = eight - 0.85 * dir;
+    ASSERT_LT(cue.x, L / 4.0);
+    s.place_cue_ball(cue);
+    const double at = heading(cue, eight);
+    std::optional<physics::Stroke> k =
+        find_stroke(s, fan(at, {0.0, 0.5, -0.5, 1.0, -1.0, 1.5, -1.5}, {2.0, 3.0, 1.5}, {0.0, -0.3}),
+                    [](const ShotRecord& r) {
+                        return pocket_of(r, 8) == pocket(PocketId::N) && !down(r, 0) &&
+                               r.summary.first_contact == 8;
+                    });
+    ASSERT_TRUE(k) << "no stroke pots the 8 in the N pocket";
+    const ShotRecord& r = s.play(*k);
+    // A legal break (a ball was pocketed), no foul, and the breaker's choice.
+    EXPECT_EQ(r.verdict.break_result, rules::BreakResult::legal);
+    EXPECT_FALSE(r.verdict.foul);
+    EXPECT_FALSE(r.verdict.game_over);
+    ASSERT_EQ(s.phase(), Phase::choose);
+    EXPECT_EQ(s.to_act(), A);
+    EXPECT_EQ(s.choice()->options,
+              (std::vector{rules::ChoiceOption::spot_8_and_continue, rules::ChoiceOption::rebreak}));
+    const Session pending = s;
+
+    // Spot the 8 and go on: the 8 is back on the foot spot, A shoots from where the cue ball
+    // lies, the table is open.
+    s.choose(rules::ChoiceOption::spot_8_and_continue);
+    EXPECT_EQ(s.phase(), Phase::shoot);
+    EXPECT_EQ(s.to_act(), A);
+    ASSERT_TRUE(s.state().has(8));
+    EXPECT_DOUBLE_EQ(s.state().positions.at(8).x, 3.0 * L / 4.0);
+    EXPECT_DOUBLE_EQ(s.state().positions.at(8).y, W / 2.0);
+    EXPECT_FALSE(s.state().group_a);
+    EXPECT_EQ(s.ball_in_hand(), rules::BallInHand::none);
+    for (const Pocketed& p : s.pocketed()) EXPECT_NE(p.ball, 8);
+    expect_consistent(s);
+
+    // Or break again: a full rack, A breaks from the kitchen.
+    Session again = pending;
+    again.choose(rules::ChoiceOption::rebreak);
+    EXPECT_EQ(again.rack_number(), 1);
+    EXPECT_EQ(again.phase(), Phase::place_cue_ball);
+    EXPECT_EQ(again.to_act(), A);
+    EXPECT_EQ(again.state().breaker, A);
+    EXPECT_EQ(again.state().shot, rules::Shot::break_shot);
+    EXPECT_EQ(again.state().on_table.size(), 15u);
+    EXPECT_TRUE(again.pocketed().empty());
+    EXPECT_EQ(again.ball_in_hand(), rules::BallInHand::kitchen);
+    expect_consistent(again);
+}
+
+TEST(Session, NineOnAFoulIsRespottedAndTheOtherBallsStayDown) {
+    // A must hit the 3 first, but the 9 lies straight in front of the cue ball, on the diagonal
+    // into the NE pocket: potting it is a foul (wrong ball first) and the 9 comes back up.
+    TableState t;
+    const physics::Vec2 nine{L - 0.35, W - 0.35};
+    t.balls = {{0, {nine.x - 0.4, nine.y - 0.4}}, {3, {0.5, 0.3}}, {9, nine}};
+    Session s = session_with(config_for(Game::nine_ball), t);
+    std::optional<physics::Stroke> k =
+        find_stroke(s, fan(45.0, {0.0, 0.2, -0.2, 0.4, -0.4}, {1.5, 2.0, 2.5}, {-0.3, 0.0}),
+                    [](const ShotRecord& r) { return down(r, 9) && !down(r, 0); });
+    ASSERT_TRUE(k);
+    const ShotRecord& r = s.play(*k);
+    EXPECT_TRUE(r.verdict.has(rules::Foul::wrong_ball_first));
+    EXPECT_FALSE(r.verdict.game_over);
+    EXPECT_EQ(r.verdict.respot, std::vector<int>{9});
+    EXPECT_EQ(s.winner(), std::nullopt);
+    EXPECT_EQ(s.to_act(), B);
+    EXPECT_EQ(s.ball_in_hand(), rules::BallInHand::anywhere);
+    ASSERT_TRUE(s.state().has(9));
+    EXPECT_DOUBLE_EQ(s.state().positions.at(9).x, 3.0 * L / 4.0);  // the foot spot was free
+    EXPECT_DOUBLE_EQ(s.state().positions.at(9).y, W / 2.0);
+    for (const Pocketed& p : s.pocketed()) EXPECT_NE(p.ball, 9);
+    expect_consistent(s);
+}
+
 TEST(Session, ScratchGivesBallInHandAnywhere) {
     // Open table after the break; A's cue ball near the SW pocket, nothing in the way.
     TableState t;
