@@ -12,6 +12,7 @@
 #include <iterator>
 #include <system_error>
 
+#include "game/atomic_file.hpp"
 #include "game/json_field.hpp"
 #include "game/session.hpp"
 
@@ -48,14 +49,7 @@ bool write_new_file(const std::filesystem::path& path, const std::string& text,
 
 }  // namespace
 
-void Session::save_file(const std::filesystem::path& path) const {
-    const std::string text = to_json();
-    try {
-        (void)from_json(text);  // never write a file that would not load
-    } catch (const LoadError& e) {
-        throw std::logic_error(
-            fmt::format("save: the session does not read back ({}); please report this", e.what()));
-    }
+void write_file_atomically(const std::filesystem::path& path, const std::string& text) {
     const std::filesystem::path tmp = temp_beside(path);
     std::string error;
     if (!write_new_file(tmp, text, error)) {
@@ -71,6 +65,17 @@ void Session::save_file(const std::filesystem::path& path) const {
         std::filesystem::remove(tmp, ignored);
         throw std::runtime_error(fmt::format("cannot save to {}: {}", path.string(), ec.message()));
     }
+}
+
+void Session::save_file(const std::filesystem::path& path) const {
+    const std::string text = to_json();
+    try {
+        (void)from_json(text);  // never write a file that would not load
+    } catch (const LoadError& e) {
+        throw std::logic_error(
+            fmt::format("save: the session does not read back ({}); please report this", e.what()));
+    }
+    write_file_atomically(path, text);
 }
 
 Session Session::load_file(const std::filesystem::path& path) {

@@ -1,0 +1,379 @@
+// The window's main loop (SDL2 + Dear ImGui): events → input → update → draw, waiting for
+// events when nothing moves; and the offscreen screenshot (EGL, no window).
+#include "app/app.hpp"
+
+#include <SDL.h>
+#include <epoxy/gl.h>
+#include <fmt/format.h>
+#include <imgui.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <backends/imgui_impl_sdl.h>
+
+#include <chrono>
+#include <stdexcept>
+#include <tuple>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "app/camera_rig.hpp"
+#include "app/controller.hpp"
+#include "app/game_setup.hpp"
+#include "app/imgui_setup.hpp"
+#include "app/input.hpp"
+#include "app/painter.hpp"
+#include "app/panel.hpp"
+#include "app/picking.hpp"
+#include "app/scene_frame.hpp"
+#include "app/status_report.hpp"
+#include "audio/engine.hpp"
+#include "game/json_field.hpp"
+#include "render/headless_context.hpp"
+#include "render/image.hpp"
+
+namespace app {
+
+namespace {
+
+#ifdef COOLAABER_HAVE_AI
+constexpr bool ai_built = true;
+#else
+constexpr bool ai_built = false;
+#endif
+
+CameraMode camera_mode(ViewMode v) { return v == ViewMode::overhead ? CameraMode::overhead : CameraMode::cue_ball; }
+
+audio::Listener listener_of(const render::Camera& c) {
+    const glm::vec3 f = c.target - c.eye;
+    return {{c.eye.x, c.eye.y, c.eye.z}, {f.x, f.y, f.z}, {c.up.x, c.up.y, c.up.z}};
+}
+
+glm::vec2 cue_ball_at(const Controller& c) {
+    for (const physics::BallState& b : c.balls_now())
+        if (b.id == 0) return {static_cast<float>(b.pos.x), static_cast<float>(b.pos.y)};
+    const physics::Vec2 h = c.session().table().head_spot();
+    return {static_cast<float>(h.x), static_cast<float>(h.y)};
+}
+
+// The game: a controller and its camera, the panel's state and the settings, as one window
+// or one screenshot shows them.
+struct Table {
+    GameSetup setup;
+    Controller controller;
+    CameraRig rig;
+    PanelState panel;
+    render::Camera last_camera;
+    bool exit_requested = false;
+
+    explicit Table(GameSetup s)
+        : setup(std::move(s)), controller(std::move(*setup.session), setup.controller),
+          rig(camera_mode(setup.settings.view)) {
+        panel.notice = setup.notice;
+        controller.set_power(setup.settings.power);
+    }
+
+    render::Camera camera(float aspect) const { return rig.camera(controller.session().table(), aspect); }
+
+    // Keeps the cue-ball view on the cue ball and the aim (frozen while the balls move).
+    void follow_cue_ball() {
+        if (controller.moving()) return;
+        const float heading = static_cast<float>(controller.aim().heading_deg * std::numbers::pi / 180.0);
+        rig.set_anchor(cue_ball_at(controller), heading, true, last_camera);
+    }
+
+    void set_power(double power) {
+        controller.set_power(power);
+        setup.settings.power = controller.aim().power;
+    }
+
+    void change_view() {
+        rig.next_view(last_camera);
+        setup.settings.view = rig.mode() == CameraMode::cue_ball ? ViewMode::cue_ball : ViewMode::overhead;
+    }
+
+    void apply(const PanelActions& a) {
+        Settings& s = setup.settings;
+        if (a.power) set_power(*a.power);
+        if (a.sound) s.sound = *a.sound;
+        if (a.aim_guide) s.aim_guide = *a.aim_guide;
+        if (a.change_view) change_view();
+        if (a.restart) controller.restart();
+        if (a.exit) exit_requested = true;
+        if (a.skip) controller.skip();
+        if (a.replay) controller.replay();
+        if (a.strike) controller.strike();
+        if (a.spin) controller.set_spin(a.spin->first, a.spin->second);
+        if (a.elevation_deg) controller.set_elevation(*a.elevation_deg);
+        if (a.choice) controller.choose(*a.choice);
+        if (a.push_out) controller.set_push_out(*a.push_out);
+        if (a.call_safety) controller.call_safety();
+        if (a.clear_call) controller.clear_call();
+        if (a.new_game) {
+            s.game = a.new_game->game;
+            s.names = a.new_game->names;
+            s.players = a.new_game->players;
+            s.house_rules = a.new_game->house_rules;
+            ControllerOptions opts = setup.controller;
+            opts.players = s.players;
+            opts.seed = fresh_seed();
+            try {
+                controller.replace(game::Session(new_game_config(s, opts.seed)), opts);
+            } catch (const std::exception& e) {
+                panel.notice = e.what();
+            }
+        }
+    }
+
+    void save_and_close() {
+        const std::string err = save_on_exit(controller.session(), setup.autosave_path);
+        if (!err.empty()) std::fprintf(stderr, "coolaaber: the game was not saved: %s\n", err.c_str());
+        try {
+            save_settings(setup.settings_path, setup.settings);
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "coolaaber: the settings were not saved: %s\n", e.what());
+        }
+    }
+};
+
+bool key_shift() { return (SDL_GetModState() & KMOD_SHIFT) != 0; }
+
+}  // namespace
+
+int run_window(const AppOptions& options) {
+    std::optional<GameSetup> setup;
+    try {
+        setup = set_up_game(options);
+    } catch (const game::LoadError& e) {
+        std::fprintf(stderr, "error: %s\n", e.what());
+        return 2;
+    }
+    if (SDL_Init(SDL_INIT_VIDEO | SDL_INIT_TIMER) != 0) {
+        std::fprintf(stderr, "coolaaber: cannot open a window: %s (is a display available? try xvfb-run)\n",
+                     SDL_GetError());
+        return 1;
+    }
+    SDL_GL_SetAttribute(SDL_GL_CONTEXT_MAJOR_VERSION, 3);
+    SDL_GL_SetAttribute(SDL_GL_CONTEXT_MINOR_VERSION, 3);
+    SDL_GL_SetAttribute(SDL_GL_CONTEXT_PROFILE_MASK, SDL_GL_CONTEXT_PROFILE_CORE);
+    SDL_GL_SetAttribute(SDL_GL_DOUBLEBUFFER, 1);
+    const Settings& s0 = setup->settings;
+    Uint32 flags = SDL_WINDOW_OPENGL | SDL_WINDOW_RESIZABLE;
+    if (s0.fullscreen) flags |= SDL_WINDOW_FULLSCREEN_DESKTOP;
+    SDL_Window* window = SDL_CreateWindow("Coolaaber", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
+                                          s0.window_width, s0.window_height, flags);
+    if (!window) {
+        std::fprintf(stderr, "coolaaber: cannot create the window: %s\n", SDL_GetError());
+        SDL_Quit();
+        return 1;
+    }
+    SDL_GLContext gl = SDL_GL_CreateContext(window);
+    if (!gl || epoxy_gl_version() < 33) {
+        std::fprintf(stderr,
+                     "coolaaber: OpenGL 3.3 is needed, but this display offers %s (%s). Update the graphics "
+                     "driver, or run with Mesa's software renderer (LIBGL_ALWAYS_SOFTWARE=1).\n",
+                     gl ? reinterpret_cast<const char*>(glGetString(GL_VERSION)) : "none", SDL_GetError());
+        if (gl) SDL_GL_DeleteContext(gl);
+        SDL_DestroyWindow(window);
+        SDL_Quit();
+        return 1;
+    }
+    SDL_GL_MakeCurrent(window, gl);
+    SDL_GL_SetSwapInterval(1);
+
+    int exit_status = 0;
+    {
+        Table t(std::move(*setup));
+        create_imgui();
+        ImGui_ImplSDL2_InitForOpenGL(window, gl);
+        ImGui_ImplOpenGL3_Init("#version 330 core");
+        audio::Engine sound;  // no device: silent, one line on stderr
+        sound.set_muted(!t.setup.settings.sound);
+        Painter painter(t.controller.session().table(), t.controller.session().config().params.ball_radius);
+        std::optional<StatusFile> status;
+        if (options.status_file) status.emplace(*options.status_file);
+
+        const double R = t.controller.session().config().params.ball_radius;
+        auto to_table = [&](double x, double y) {
+            return table_point(t.last_camera, painter.view_width(), painter.height(), x, y, R);
+        };
+        TableInput input(t.controller, t.rig, to_table);
+        double mouse_x = 0, mouse_y = 0;
+        bool mouse_down[3] = {false, false, false};
+        int sound_serial = t.controller.shot_serial();
+        int warm_frames = 2;
+        auto last = std::chrono::steady_clock::now();
+        auto over_panel = [&](double x) { return x >= painter.view_width(); };
+
+        while (!t.exit_requested) {
+            // ---- Events: wait for one when nothing moves
+            const bool animating = t.controller.moving() || t.rig.animating() || warm_frames > 0 ||
+                                   (t.controller.busy() && !t.controller.computer_thinking());
+            SDL_Event e;
+            bool have = false;
+            if (!animating) have = SDL_WaitEventTimeout(&e, t.controller.computer_thinking() ? 30 : 500) != 0;
+            bool had_event = false;
+            while (have || SDL_PollEvent(&e)) {
+                have = false;
+                had_event = true;
+                ImGui_ImplSDL2_ProcessEvent(&e);
+                const bool ui = ImGui::GetIO().WantCaptureMouse;
+                switch (e.type) {
+                    case SDL_QUIT: t.exit_requested = true; break;
+                    case SDL_MOUSEMOTION:
+                        mouse_x = e.motion.x;
+                        mouse_y = e.motion.y;
+                        input.motion(mouse_x, mouse_y, key_shift());
+                        break;
+                    case SDL_MOUSEBUTTONDOWN:
+                    case SDL_MOUSEBUTTONUP: {
+                        mouse_x = e.button.x;
+                        mouse_y = e.button.y;
+                        const bool down = e.type == SDL_MOUSEBUTTONDOWN;
+                        const int slot = e.button.button == SDL_BUTTON_LEFT ? 0 : e.button.button == SDL_BUTTON_RIGHT ? 1 : 2;
+                        mouse_down[slot] = down;
+                        const MouseButton b = slot == 0 ? MouseButton::left : slot == 1 ? MouseButton::right : MouseButton::middle;
+                        if (down && !ui && !over_panel(mouse_x)) input.press(b, mouse_x, mouse_y);
+                        if (!down) input.release(b, mouse_x, mouse_y);
+                        break;
+                    }
+                    case SDL_MOUSEWHEEL:
+                        if (!over_panel(mouse_x)) input.wheel(static_cast<float>(e.wheel.y));
+                        break;
+                    case SDL_KEYDOWN: {
+                        if (ImGui::GetIO().WantTextInput) break;
+                        const bool shift = key_shift();
+                        switch (e.key.keysym.sym) {
+                            case SDLK_LEFT: t.controller.turn_aim(shift ? 0.05 : 0.5); break;
+                            case SDLK_RIGHT: t.controller.turn_aim(shift ? -0.05 : -0.5); break;
+                            case SDLK_UP: t.set_power(t.controller.aim().power + 0.05); break;
+                            case SDLK_DOWN: t.set_power(t.controller.aim().power - 0.05); break;
+                            case SDLK_SPACE: t.controller.strike(); break;
+                            case SDLK_v: t.change_view(); break;
+                            case SDLK_s:
+                            case SDLK_RETURN: t.controller.skip(); break;
+                            case SDLK_p: t.controller.replay(); break;
+                            case SDLK_g: t.setup.settings.aim_guide = !t.setup.settings.aim_guide; break;
+                            case SDLK_o: t.rig.set_mode(t.rig.mode() == CameraMode::free ? CameraMode::overhead : CameraMode::free, t.last_camera); break;
+                            case SDLK_r: t.panel.confirm_restart = true; break;
+                            case SDLK_ESCAPE: t.panel.menu = true; break;
+                            case SDLK_F11: {
+                                const bool full = (SDL_GetWindowFlags(window) & SDL_WINDOW_FULLSCREEN_DESKTOP) != 0;
+                                SDL_SetWindowFullscreen(window, full ? 0 : SDL_WINDOW_FULLSCREEN_DESKTOP);
+                                t.setup.settings.fullscreen = !full;
+                                break;
+                            }
+                            default: break;
+                        }
+                        break;
+                    }
+                    case SDL_WINDOWEVENT:
+                        if (e.window.event == SDL_WINDOWEVENT_SIZE_CHANGED &&
+                            !(SDL_GetWindowFlags(window) & SDL_WINDOW_FULLSCREEN_DESKTOP)) {
+                            t.setup.settings.window_width = e.window.data1;
+                            t.setup.settings.window_height = e.window.data2;
+                        }
+                        break;
+                    default: break;
+                }
+            }
+            warm_frames = had_event ? 3 : std::max(0, warm_frames - 1);
+
+            // ---- Update
+            const auto now = std::chrono::steady_clock::now();
+            const double dt = std::min(0.1, std::chrono::duration<double>(now - last).count());
+            last = now;
+            auto signature = [&] {
+                return std::tuple(t.controller.shot_serial(), t.controller.busy(), t.controller.computer_thinking(),
+                                  t.controller.session().phase(), t.controller.session().game_number());
+            };
+            const auto before = signature();
+            t.controller.update(dt);
+            t.rig.update(dt);
+            t.follow_cue_ball();
+            if (t.controller.shot_serial() != sound_serial) {
+                sound_serial = t.controller.shot_serial();
+                if (t.controller.moving()) sound.start(t.controller.playback().shot());
+            }
+            sound.set_muted(!t.setup.settings.sound);
+            if (t.controller.moving()) sound.update(t.controller.playback().time());
+            const bool redraw = had_event || animating || signature() != before;
+            if (!redraw) continue;
+
+            // ---- Draw
+            int w = 0, h = 0;
+            SDL_GL_GetDrawableSize(window, &w, &h);
+            painter.resize(w, h);
+            ImGui_ImplOpenGL3_NewFrame();
+            ImGui_ImplSDL2_NewFrame();
+            // ImGui 1.86's SDL backend reads the global mouse state, stale under Xvfb/XTEST:
+            // feed the position and buttons from the events instead.
+            ImGuiIO& io = ImGui::GetIO();
+            io.MousePos = ImVec2(static_cast<float>(mouse_x), static_cast<float>(mouse_y));
+            for (int i = 0; i < 3; ++i) io.MouseDown[i] = mouse_down[i];
+            ImGui::NewFrame();
+            const PanelActions actions = draw_panel(t.controller, t.setup.settings, t.panel, static_cast<float>(w),
+                                                    static_cast<float>(h), ai_built);
+            ImGui::Render();
+            t.apply(actions);
+            const float aspect = static_cast<float>(painter.view_width()) / static_cast<float>(painter.height());
+            t.last_camera = t.camera(aspect);
+            sound.set_listener(listener_of(t.last_camera));
+            const SceneFrame scene = build_scene(t.controller, t.setup.settings.aim_guide);
+            painter.draw(scene, t.last_camera, ImGui::GetDrawData());
+            painter.present();
+            SDL_GL_SwapWindow(window);
+            if (status) status->write(status_json(t.controller, t.setup.settings, t.rig.mode()));
+        }
+        t.save_and_close();
+        ImGui_ImplOpenGL3_Shutdown();
+        ImGui_ImplSDL2_Shutdown();
+        destroy_imgui();
+    }
+    SDL_GL_DeleteContext(gl);
+    SDL_DestroyWindow(window);
+    SDL_Quit();
+    return exit_status;
+}
+
+int run_screenshot(const AppOptions& options) {
+    std::optional<GameSetup> setup;
+    try {
+        setup = set_up_game(options);
+    } catch (const game::LoadError& e) {
+        std::fprintf(stderr, "error: %s\n", e.what());
+        return 2;
+    }
+    try {
+        render::HeadlessContext context;
+        const int w = setup->settings.window_width, h = setup->settings.window_height;
+        Table t(std::move(*setup));
+        create_imgui();
+        ImGui_ImplOpenGL3_Init("#version 330 core");
+        Painter painter(t.controller.session().table(), t.controller.session().config().params.ball_radius);
+        painter.resize(w, h);
+        ImGuiIO& io = ImGui::GetIO();
+        io.DisplaySize = ImVec2(static_cast<float>(w), static_cast<float>(h));
+        io.DeltaTime = 1.0f / 60.0f;
+        t.follow_cue_ball();
+        for (int frame = 0; frame < 2; ++frame) {  // ImGui lays its windows out on the first frame
+            ImGui_ImplOpenGL3_NewFrame();
+            ImGui::NewFrame();
+            (void)draw_panel(t.controller, t.setup.settings, t.panel, static_cast<float>(w), static_cast<float>(h), ai_built);
+            ImGui::Render();
+        }
+        const float aspect = static_cast<float>(painter.view_width()) / static_cast<float>(painter.height());
+        t.rig.update(10.0);
+        t.last_camera = t.camera(aspect);
+        painter.draw(build_scene(t.controller, t.setup.settings.aim_guide), t.last_camera, ImGui::GetDrawData());
+        if (!render::write_png(options.screenshot->string(), render::read_pixels(w, h)))
+            throw std::runtime_error("cannot write " + options.screenshot->string());
+        ImGui_ImplOpenGL3_Shutdown();
+        destroy_imgui();
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "coolaaber: --screenshot: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}
+
+}  // namespace app

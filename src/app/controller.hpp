@@ -1,0 +1,145 @@
+// The game as the player drives it, without a window: the session, the aim, ball in hand,
+// calls, choices, computer players, and the playback of each shot. The app turns input into
+// these calls and draws what the queries return (update, then draw).
+//
+//   human:    aim (turn, power, spin) ─▶ strike ─┐
+//   computer: decide (worker thread) ─▶ show aim ─▶ strike with execution noise ─┤
+//                                                                               ▼
+//             Session::play ─▶ Playback (real time, skippable) ─▶ next turn / choice / game over
+#pragma once
+
+#include <array>
+#include <future>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/aim_preview.hpp"
+#include "app/ball_orientations.hpp"
+#include "app/playback.hpp"
+#include "game/player.hpp"
+#include "game/session.hpp"
+#include "physics/rack.hpp"
+
+namespace app {
+
+/// The stroke the player is preparing.
+struct Aim {
+    double heading_deg = 0.0;    ///< (unit: deg; 0 = +x, 90 = +y)
+    double power = 0.45;         ///< the Power slider (unit: 0–1 of max_cue_speed)
+    double side = 0.0;           ///< tip offset right of centre (unit: R)
+    double top = 0.0;            ///< tip offset above centre (unit: R)
+    double elevation_deg = 0.0;  ///< (unit: deg)
+};
+
+struct ControllerOptions {
+    std::array<std::string, 2> players{"human", "human"};  ///< seat kinds (seats.hpp)
+    double noise = 1.0;             ///< execution-noise scale for computer players
+    std::uint64_t seed = 1;         ///< computer players' and noise streams
+    double playback_speed = 1.0;    ///< shot time per real second; 0: every shot skips to its end
+    double computer_aim_seconds = 0.9;  ///< how long the computer's aim is shown before it strikes
+};
+
+inline constexpr double min_cue_speed = 0.3;  ///< the Power slider at 0 (unit: m/s)
+inline constexpr double max_cue_speed = 8.0;  ///< the Power slider at 1 (unit: m/s)
+
+class Controller {
+  public:
+    Controller(game::Session session, ControllerOptions options);
+    ~Controller();
+    Controller(const Controller&) = delete;
+    Controller& operator=(const Controller&) = delete;
+
+    /// Advances by `dt` real seconds: playback, computer players, pending placements.
+    void update(double dt);
+
+    // ---- Queries for drawing
+    const game::Session& session() const { return session_; }
+    const Playback& playback() const { return playback_; }
+    const BallOrientations& orientations() const { return orientations_; }
+    /// The balls as they lie now: the shot's at the playback time while it plays, else the
+    /// session's (pocketed balls left out).
+    std::vector<physics::BallState> balls_now() const;
+    /// A shot is being played back (the app keeps drawing frames).
+    bool moving() const { return playback_.moving(); }
+    /// Something will change without input (playback, a computer thinking or aiming).
+    bool busy() const;
+    /// The human at the keyboard may act now (aim, strike, place, call, choose).
+    bool human_to_act() const;
+    bool computer_thinking() const { return thinking_.valid(); }
+    /// The stroke being prepared (the human's, or the computer's while it shows its aim).
+    const Aim& aim() const { return aim_; }
+    /// The aim guide and proposed call for the current aim; empty while the balls move.
+    const AimPreview* preview() const;
+    /// The call the next stroke will have: the player's own, else the proposal from the aim.
+    rules::Call call() const;
+    bool call_is_manual() const { return manual_call_.has_value(); }
+    /// The text of what the last shot did (empty before the first).
+    const std::string& last_shot_words() const { return last_words_; }
+    /// Why the last action was refused (shown in the panel), empty when it was not.
+    const std::string& refusal() const { return refusal_; }
+    /// Increments when a new shot starts playing (the app starts its sound then).
+    int shot_serial() const { return shot_serial_; }
+    const std::string& seat_kind(rules::Player p) const { return options_.players[rules::index(p)]; }
+    physics::Stroke stroke_of(const Aim& aim) const;
+
+    // ---- Human actions (ignored when it is not a human's turn; refusals go to refusal())
+    void turn_aim(double delta_deg);
+    void set_heading(double deg);
+    void set_power(double power);
+    void set_spin(double side, double top);
+    void set_elevation(double deg);
+    /// Moves the cue ball in hand to `pos`; false (and refusal()) when it may not go there.
+    bool move_cue_ball(physics::Vec2 pos);
+    /// Why the cue ball in hand may not go to `pos`, or empty.
+    std::optional<std::string> check_cue_ball(physics::Vec2 pos) const { return session_.check_cue_ball(pos); }
+    /// A click on the table at `pos` (unit: m): on an object ball, calls it; near a pocket,
+    /// calls that pocket (for the called ball, or the proposed one).
+    void click_table(physics::Vec2 pos);
+    void call_safety();
+    void clear_call();
+    void set_push_out(bool declare);
+    void strike();
+    void choose(rules::ChoiceOption option);
+
+    // ---- Anyone
+    void skip();     ///< the shot being played back jumps to its end
+    void replay();   ///< the last shot again from its strike
+    void restart();  ///< a new rack (the next game of the session)
+    /// Replaces the session (a New Game with other rules or names, or a loaded game).
+    void replace(game::Session session, ControllerOptions options);
+
+  private:
+    void begin_turn();
+    void refresh_preview();
+    void play(const physics::Stroke& stroke);
+    void finish_shot();
+    void prepare_human_ball_in_hand();
+    void launch_computer();
+    void apply_computer(const game::Decision& d);
+    void stop_thinking();
+    physics::Vec2 default_cue_spot() const;
+    void aim_at_target();
+
+    game::Session session_;
+    ControllerOptions options_;
+    std::array<std::unique_ptr<game::Player>, 2> computers_;
+    physics::SplitMix64 noise_rng_;
+    Playback playback_;
+    BallOrientations orientations_;
+    BallOrientations at_strike_;  ///< the orientations when the shot on show was struck (replays)
+    Aim aim_;
+    std::optional<AimPreview> preview_;
+    std::optional<rules::Call> manual_call_;
+    std::future<game::Decision> thinking_;
+    std::optional<game::Decision> computer_decision_;  ///< decided, shown before the strike
+    double computer_aim_left_ = 0.0;
+    bool settled_ = true;   ///< the last shot's playback has reached its end and been taken in
+    int dry_shots_ = 0;     ///< computer-only games: shots with no ball down (stalemate rule)
+    std::string last_words_;
+    std::string refusal_;
+    int shot_serial_ = 0;
+};
+
+}  // namespace app

@@ -1,0 +1,81 @@
+#include "app/game_setup.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+
+#include "game/json_field.hpp"
+
+namespace app {
+
+std::uint64_t fresh_seed() {
+    return static_cast<std::uint64_t>(std::chrono::system_clock::now().time_since_epoch().count());
+}
+
+game::Config new_game_config(const Settings& s, std::uint64_t seed) {
+    game::Config c;
+    c.game = s.game;
+    c.options = s.house_rules;
+    c.names = s.names;
+    c.seed = seed;
+    return c;
+}
+
+GameSetup set_up_game(const AppOptions& o) {
+    GameSetup g;
+    g.settings_path = config_folder() / "settings.json";
+    g.autosave_path = data_folder() / "saved-game.json";
+    LoadedSettings loaded = load_settings(g.settings_path);
+    g.settings = loaded.settings;
+    if (loaded.message) g.notice = *loaded.message;
+    Settings& s = g.settings;
+    if (o.width) s.window_width = *o.width;
+    if (o.height) s.window_height = *o.height;
+    if (o.fullscreen) s.fullscreen = true;
+    if (o.view) s.view = *o.view;
+    if (o.players) s.players = *o.players;
+    if (o.noise) s.noise = *o.noise;
+    if (o.game) s.game = *o.game;
+
+    const std::uint64_t seed = o.seed.value_or(fresh_seed());
+    g.controller.players = s.players;
+    g.controller.noise = s.noise;
+    g.controller.seed = seed;
+    g.controller.playback_speed = o.playback_speed;
+
+    if (o.load) {
+        g.session = game::Session::load_file(*o.load);  // a bad file: LoadError to the caller
+        return g;
+    }
+    std::error_code ec;
+    if (!o.game && std::filesystem::exists(g.autosave_path, ec)) {
+        try {
+            g.session = game::Session::load_file(g.autosave_path);
+            if (g.notice.empty()) g.notice = "Resumed the game saved when you last exited.";
+            return g;
+        } catch (const game::LoadError& e) {
+            const std::filesystem::path aside = keep_aside(g.autosave_path);
+            g.notice += fmt::format("{}The saved game could not be resumed ({}); it was kept as {}.",
+                                    g.notice.empty() ? "" : "\n", e.what(), aside.string());
+        }
+    }
+    g.session.emplace(new_game_config(s, seed));
+    return g;
+}
+
+std::string save_on_exit(const game::Session& session, const std::filesystem::path& path) {
+    std::error_code ec;
+    try {
+        if (session.phase() == game::Phase::game_over) {
+            std::filesystem::remove(path, ec);
+            return {};
+        }
+        std::filesystem::create_directories(path.parent_path(), ec);
+        session.save_file(path);
+    } catch (const std::exception& e) {
+        return e.what();
+    }
+    return {};
+}
+
+}  // namespace app

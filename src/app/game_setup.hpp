@@ -1,0 +1,38 @@
+// How a run of the game begins: the settings read (or kept aside when bad), then a session:
+// loaded (--load), resumed (the game saved on exit), or new, and who plays each seat.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "app/app.hpp"
+#include "app/controller.hpp"
+#include "app/settings.hpp"
+#include "game/session.hpp"
+
+namespace app {
+
+struct GameSetup {
+    Settings settings;
+    std::filesystem::path settings_path;
+    std::filesystem::path autosave_path;
+    std::optional<game::Session> session;
+    ControllerOptions controller;
+    std::string notice;  ///< shown in the panel (a settings or saved game kept aside, a resume)
+};
+
+/// A new session's configuration from the settings (names, game, house rules) and a seed.
+game::Config new_game_config(const Settings& settings, std::uint64_t seed);
+
+/// Throws game::LoadError for a bad --load file (the caller reports it and exits 2).
+GameSetup set_up_game(const AppOptions& options);
+
+/// A seed from the clock (a new rack each run), unless one was given.
+std::uint64_t fresh_seed();
+
+/// Saves the game on exit (an unfinished one) or removes the old save (a finished one);
+/// returns an error message or empty.
+std::string save_on_exit(const game::Session& session, const std::filesystem::path& path);
+
+}  // namespace app

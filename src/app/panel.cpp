@@ -1,0 +1,255 @@
+#include "app/panel.hpp"
+
+#include <fmt/format.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "app/plain_words.hpp"
+
+namespace app {
+
+namespace {
+
+const ImVec4 accent{0.95f, 0.80f, 0.35f, 1.0f};
+const ImVec4 warning{1.0f, 0.45f, 0.40f, 1.0f};
+
+bool full_button(const char* label) { return ImGui::Button(label, ImVec2(-1.0f, 0.0f)); }
+
+// The cue ball seen from the shooter, with a dot where the tip will hit; click or drag on it
+// to move the dot. Returns the new (side, top) when changed.
+std::optional<std::pair<double, double>> spin_picker(double side, double top, bool enabled) {
+    const float size = 96.0f;
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    const ImVec2 centre{origin.x + size / 2, origin.y + size / 2};
+    const float r = size / 2 - 4.0f;
+    ImGui::InvisibleButton("##spin", ImVec2(size, size));
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    dl->AddCircleFilled(centre, r, IM_COL32(238, 236, 226, 255), 48);
+    dl->AddCircle(centre, r, IM_COL32(120, 120, 120, 255), 48, 1.5f);
+    dl->AddCircle(centre, r * 0.5f, IM_COL32(200, 60, 60, 90), 48, 1.0f);  // the miscue limit
+    dl->AddLine({centre.x - r, centre.y}, {centre.x + r, centre.y}, IM_COL32(0, 0, 0, 40));
+    dl->AddLine({centre.x, centre.y - r}, {centre.x, centre.y + r}, IM_COL32(0, 0, 0, 40));
+    const ImVec2 dot{centre.x + static_cast<float>(side) * r, centre.y - static_cast<float>(top) * r};
+    dl->AddCircleFilled(dot, 5.0f, IM_COL32(30, 80, 200, 255), 16);
+    if (enabled && ImGui::IsItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+        const ImVec2 m = ImGui::GetIO().MousePos;
+        double s = (m.x - centre.x) / r, t = -(m.y - centre.y) / r;
+        const double len = std::hypot(s, t);
+        const double limit = 0.5;  // physics miscue_limit: beyond it the tip slips
+        if (len > limit) {
+            s *= limit / len;
+            t *= limit / len;
+        }
+        s = std::round(s * 100.0) / 100.0;
+        t = std::round(t * 100.0) / 100.0;
+        if (s != side || t != top) return std::pair{s, t};
+    }
+    return std::nullopt;
+}
+
+void new_game_dialog(PanelState& st, PanelActions& out, bool ai_available) {
+    if (st.new_game_open) {
+        ImGui::OpenPopup("New Game");
+        st.new_game_open = false;
+    }
+    ImGui::SetNextWindowSize(ImVec2(360, 0), ImGuiCond_Appearing);
+    if (!ImGui::BeginPopupModal("New Game", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    NewGame& d = st.draft;
+    int game = d.game == rules::Game::eight_ball ? 0 : 1;
+    ImGui::RadioButton("8-ball", &game, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("9-ball", &game, 1);
+    d.game = game == 0 ? rules::Game::eight_ball : rules::Game::nine_ball;
+    std::vector<std::string> kinds{"human", "random"};
+    if (ai_available)
+        for (int level = 1; level <= 5; ++level) kinds.push_back(fmt::format("ai:{}", level));
+    for (int i = 0; i < 2; ++i) {
+        ImGui::PushID(i);
+        char buf[41];
+        std::snprintf(buf, sizeof buf, "%s", d.names[static_cast<std::size_t>(i)].c_str());
+        ImGui::SetNextItemWidth(150);
+        if (ImGui::InputText("##name", buf, sizeof buf) && buf[0] != '\0') d.names[static_cast<std::size_t>(i)] = buf;
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(130);
+        const std::string& current = d.players[static_cast<std::size_t>(i)];
+        const std::string label = current == "human" ? "Human" : current == "random" ? "Computer (random)" : "Computer level " + current.substr(3);
+        if (ImGui::BeginCombo("##kind", label.c_str())) {
+            for (const std::string& k : kinds) {
+                const std::string l = k == "human" ? "Human" : k == "random" ? "Computer (random)" : "Computer level " + k.substr(3);
+                if (ImGui::Selectable(l.c_str(), k == current)) d.players[static_cast<std::size_t>(i)] = k;
+            }
+            ImGui::EndCombo();
+        }
+        ImGui::PopID();
+    }
+    if (d.game == rules::Game::eight_ball && ImGui::CollapsingHeader("House rules (8-ball)")) {
+        rules::Options& o = d.house_rules;
+        int calls = static_cast<int>(o.call_shots);
+        ImGui::Text("Calling:");
+        ImGui::RadioButton("every shot", &calls, 0);
+        ImGui::SameLine();
+        ImGui::RadioButton("the 8 only", &calls, 1);
+        ImGui::SameLine();
+        ImGui::RadioButton("none", &calls, 2);
+        o.call_shots = static_cast<rules::CallShots>(calls);
+        bool wins = o.eight_on_break == rules::EightOnBreak::wins;
+        ImGui::Checkbox("8 on the break wins", &wins);
+        o.eight_on_break = wins ? rules::EightOnBreak::wins : rules::EightOnBreak::spot_or_rebreak;
+        bool kitchen = o.foul_ball_in_hand == rules::FoulBallInHand::kitchen;
+        ImGui::Checkbox("Ball in hand after a foul: kitchen only", &kitchen);
+        o.foul_ball_in_hand = kitchen ? rules::FoulBallInHand::kitchen : rules::FoulBallInHand::anywhere;
+        ImGui::Checkbox("Scratch on the 8 loses", &o.scratch_on_eight_loses);
+        ImGui::Checkbox("Groups decided on the break", &o.groups_on_break);
+        ImGui::Checkbox("Rail after contact required", &o.rail_after_contact);
+    }
+    ImGui::Separator();
+    if (ImGui::Button("Start", ImVec2(120, 0))) {
+        out.new_game = d;
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel", ImVec2(120, 0))) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+}
+
+}  // namespace
+
+PanelActions draw_panel(const Controller& c, const Settings& settings, PanelState& st, float width, float height,
+                        bool ai_available) {
+    PanelActions out;
+    const game::Session& s = c.session();
+    ImGui::SetNextWindowPos(ImVec2(width - panel_width, 0));
+    ImGui::SetNextWindowSize(ImVec2(panel_width, height));
+    ImGui::Begin("Coolaaber", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                     ImGuiWindowFlags_NoTitleBar);
+    ImGui::TextColored(accent, "COOLAABER");
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s  game %d", s.config().game == rules::Game::eight_ball ? "8-ball" : "9-ball",
+                        s.game_number() + 1);
+    if (!st.notice.empty()) {
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextColored(warning, "%s", st.notice.c_str());
+        ImGui::PopTextWrapPos();
+        if (ImGui::SmallButton("OK")) st.notice.clear();
+    }
+    ImGui::Separator();
+
+    // ---- The original controls
+    float power = static_cast<float>(c.aim().power * 100.0);
+    ImGui::Text("Power");
+    ImGui::SetNextItemWidth(-1.0f);
+    if (ImGui::SliderFloat("##power", &power, 0.0f, 100.0f, "%.0f %%")) out.power = power / 100.0;
+    bool sound = settings.sound;
+    if (ImGui::Checkbox("Sound", &sound)) out.sound = sound;
+    if (full_button("Change View")) out.change_view = true;
+    if (full_button("Restart")) {
+        if (s.history().empty() || s.phase() == game::Phase::game_over) out.restart = true;
+        else st.confirm_restart = true;
+    }
+    if (full_button("Exit")) out.exit = true;
+
+    // ---- The information bar
+    ImGui::Separator();
+    ImGui::PushTextWrapPos(0.0f);
+    const std::vector<std::string> lines = info_lines(s, c.call());
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        if (i == 0) ImGui::TextColored(accent, "%s", lines[i].c_str());
+        else ImGui::TextUnformatted(lines[i].c_str());
+    }
+    if (c.computer_thinking()) ImGui::TextDisabled("(thinking...)");
+    if (!c.last_shot_words().empty()) ImGui::TextDisabled("%s", c.last_shot_words().c_str());
+    if (!c.refusal().empty()) ImGui::TextColored(warning, "%s", c.refusal().c_str());
+    ImGui::PopTextWrapPos();
+    const bool mine = c.human_to_act();
+    if (std::optional<rules::Choice> choice = s.choice(); choice && mine)
+        for (rules::ChoiceOption o : choice->options)
+            if (full_button(choice_words(o).c_str())) out.choice = o;
+
+    // ---- The stroke
+    ImGui::Separator();
+    ImGui::Text("Tip (spin)");
+    if (auto spin = spin_picker(c.aim().side, c.aim().top, mine)) out.spin = spin;
+    ImGui::SameLine();
+    ImGui::BeginGroup();
+    ImGui::Text("side %+.2f", c.aim().side);
+    ImGui::Text("top  %+.2f", c.aim().top);
+    if (ImGui::SmallButton("Centre")) out.spin = std::pair{0.0, 0.0};
+    ImGui::EndGroup();
+    float elevation = static_cast<float>(c.aim().elevation_deg);
+    ImGui::Text("Cue elevation");
+    ImGui::SetNextItemWidth(-1.0f);
+    if (ImGui::SliderFloat("##elevation", &elevation, 0.0f, 60.0f, "%.0f deg")) out.elevation_deg = elevation;
+    if (s.push_out_available() && mine) {
+        bool push = s.state().shot == rules::Shot::push_out;
+        if (ImGui::Checkbox("Push-out", &push)) out.push_out = push;
+    }
+    if (s.config().game == rules::Game::eight_ball && s.state().shot != rules::Shot::break_shot && mine) {
+        if (ImGui::Button("Call safety")) out.call_safety = true;
+        if (c.call_is_manual()) {
+            ImGui::SameLine();
+            if (ImGui::Button("Call from aim")) out.clear_call = true;
+        }
+    }
+    bool guide = settings.aim_guide;
+    if (ImGui::Checkbox("Aim guide", &guide)) out.aim_guide = guide;
+    if (mine && s.phase() == game::Phase::shoot && full_button("Strike")) out.strike = true;
+    if (c.moving()) {
+        if (full_button("Skip")) out.skip = true;
+    } else if (c.playback().has_shot() && !c.busy()) {
+        if (full_button("Replay")) out.replay = true;
+    }
+    ImGui::Separator();
+    if (full_button("New Game...")) {
+        st.draft = NewGame{settings.game, settings.names, settings.players, settings.house_rules};
+        st.new_game_open = true;
+    }
+    ImGui::TextDisabled("Right-drag: aim, release: strike");
+    ImGui::TextDisabled("Left-drag: aim (or move ball in hand)");
+    ImGui::TextDisabled("Click ball, pocket: call. Wheel: zoom");
+    ImGui::TextDisabled("Arrows: fine aim (Shift finer), Space");
+    ImGui::TextDisabled("strike, V view, S skip, R restart");
+
+    new_game_dialog(st, out, ai_available);
+    if (st.confirm_restart) {
+        ImGui::OpenPopup("Restart?");
+        st.confirm_restart = false;
+    }
+    if (ImGui::BeginPopupModal("Restart?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        ImGui::Text("Abandon this game and rack again?");
+        if (ImGui::Button("Yes, restart", ImVec2(130, 0))) {
+            out.restart = true;
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("No", ImVec2(130, 0))) ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+    }
+    if (st.menu) {
+        ImGui::OpenPopup("Menu");
+        st.menu = false;
+    }
+    if (ImGui::BeginPopupModal("Menu", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        if (ImGui::Button("Resume", ImVec2(200, 0))) ImGui::CloseCurrentPopup();
+        if (ImGui::Button("New Game...", ImVec2(200, 0))) {
+            st.draft = NewGame{settings.game, settings.names, settings.players, settings.house_rules};
+            st.new_game_open = true;
+            ImGui::CloseCurrentPopup();
+        }
+        if (ImGui::Button("Restart", ImVec2(200, 0))) {
+            st.confirm_restart = true;
+            ImGui::CloseCurrentPopup();
+        }
+        if (ImGui::Button("Save and exit", ImVec2(200, 0))) {
+            out.exit = true;
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::EndPopup();
+    }
+    ImGui::End();
+    return out;
+}
+
+}  // namespace app

@@ -1,0 +1,60 @@
+// The side panel (Dear ImGui): the original game's controls — Power, Sound, Change View,
+// Restart, Exit — the information bar under them, and the additions: spin, elevation, calls,
+// push-out, the rules' choices, aim guide, skip/replay, New Game. Drawing the panel only
+// reports what the player asked for (PanelActions); the app applies it after the frame.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/controller.hpp"
+#include "app/settings.hpp"
+
+namespace app {
+
+/// A New Game as the dialog sets it up.
+struct NewGame {
+    rules::Game game = rules::Game::eight_ball;
+    std::array<std::string, 2> names{"Player 1", "Player 2"};
+    std::array<std::string, 2> players{"human", "human"};
+    rules::Options house_rules;
+};
+
+struct PanelActions {
+    std::optional<double> power;
+    std::optional<bool> sound;
+    std::optional<bool> aim_guide;
+    bool change_view = false;
+    bool restart = false;  ///< confirmed
+    bool exit = false;
+    bool skip = false;
+    bool replay = false;
+    bool strike = false;
+    std::optional<std::pair<double, double>> spin;  ///< side, top (unit: R)
+    std::optional<double> elevation_deg;
+    std::optional<rules::ChoiceOption> choice;
+    std::optional<bool> push_out;
+    bool call_safety = false;
+    bool clear_call = false;
+    std::optional<NewGame> new_game;
+};
+
+/// What the panel keeps between frames (which dialog is open, the New Game draft).
+struct PanelState {
+    bool confirm_restart = false;  ///< ask "Restart this game?"
+    bool menu = false;             ///< the Esc menu
+    bool new_game_open = false;
+    NewGame draft;
+    std::string notice;            ///< a message shown once at the top (e.g. a bad settings file)
+};
+
+inline constexpr float panel_width = 300.0f;  ///< (unit: px)
+
+/// Draws the panel at the right edge of a `width` × `height` window. Call between
+/// ImGui::NewFrame() and ImGui::Render().
+PanelActions draw_panel(const Controller& controller, const Settings& settings, PanelState& state,
+                        float width, float height, bool ai_available);
+
+}  // namespace app

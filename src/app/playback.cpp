@@ -1,0 +1,28 @@
+#include "app/playback.hpp"
+
+#include <algorithm>
+
+namespace app {
+
+void Playback::start(physics::Shot shot) {
+    shot_ = std::move(shot);
+    t_ = 0.0;
+}
+
+double Playback::end() const {
+    if (!shot_) return 0.0;
+    if (const std::optional<double> rest = shot_->rest_time()) return *rest;
+    return shot_->events().empty() ? 0.0 : shot_->events().back().time;
+}
+
+void Playback::advance(double dt) {
+    if (!shot_) return;
+    t_ = std::min(end(), t_ + std::max(0.0, dt));
+}
+
+std::vector<physics::BallState> Playback::states() const {
+    if (!shot_) return {};
+    return shot_->states_at(t_);
+}
+
+}  // namespace app

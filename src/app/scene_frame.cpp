@@ -1,0 +1,40 @@
+#include "app/scene_frame.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace app {
+
+render::FrameView SceneFrame::view(const render::Camera& camera) const {
+    render::FrameView v;
+    v.balls = balls;
+    v.camera = camera;
+    v.cue = cue;
+    v.aim = show_aim ? &aim : nullptr;
+    return v;
+}
+
+SceneFrame build_scene(const Controller& c, bool aim_guide) {
+    SceneFrame f;
+    const double R = c.session().config().params.ball_radius;
+    for (const physics::BallState& b : c.balls_now())
+        f.balls.push_back(render::ball_view(b, R, c.orientations().of(b.id)));
+    for (const game::Pocketed& p : c.session().pocketed()) f.tray.push_back(p.ball);
+    const AimPreview* preview = c.preview();
+    const bool at_table = c.session().phase() == game::Phase::shoot && !c.moving();
+    const auto cue = c.session().state().positions.find(0);
+    if (at_table && preview && cue != c.session().state().positions.end() && !c.computer_thinking()) {
+        const Aim& a = c.aim();
+        render::CueView k;
+        k.cue_ball = {static_cast<float>(cue->second.x), static_cast<float>(cue->second.y)};
+        k.heading = static_cast<float>(a.heading_deg * std::numbers::pi / 180.0);
+        k.elevation = static_cast<float>(a.elevation_deg * std::numbers::pi / 180.0);
+        k.pull_back = static_cast<float>(0.015 + 0.22 * a.power);
+        f.cue = k;
+        f.aim = preview->view;
+        f.show_aim = aim_guide;
+    }
+    return f;
+}
+
+}  // namespace app

@@ -1,0 +1,27 @@
+// What one frame shows of the game, built from the controller (read only): the balls with
+// their orientations, the cue along the aim, the aim guide. Holds the storage that
+// render::FrameView's spans point into.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "app/controller.hpp"
+#include "render/renderer.hpp"
+
+namespace app {
+
+struct SceneFrame {
+    std::vector<render::BallView> balls;
+    std::optional<render::CueView> cue;
+    render::AimView aim;
+    bool show_aim = false;
+    std::vector<int> tray;  ///< pocketed object balls, in order
+
+    /// The view for the renderer; valid while this SceneFrame lives unchanged.
+    render::FrameView view(const render::Camera& camera) const;
+};
+
+SceneFrame build_scene(const Controller& controller, bool aim_guide);
+
+}  // namespace app

@@ -1,0 +1,69 @@
+#include "app/status_report.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include "app/plain_words.hpp"
+#include "game/atomic_file.hpp"
+#include "rules/names.hpp"
+
+namespace app {
+
+namespace {
+
+const char* phase_name(game::Phase p) {
+    switch (p) {
+        case game::Phase::place_cue_ball: return "place_cue_ball";
+        case game::Phase::shoot: return "shoot";
+        case game::Phase::choose: return "choose";
+        case game::Phase::game_over: return "game_over";
+    }
+    return "?";
+}
+
+const char* view_name(CameraMode m) {
+    switch (m) {
+        case CameraMode::overhead: return "overhead";
+        case CameraMode::cue_ball: return "cueball";
+        case CameraMode::free: return "free";
+    }
+    return "?";
+}
+
+}  // namespace
+
+std::string status_json(const Controller& c, const Settings& s, CameraMode view) {
+    const game::Session& session = c.session();
+    nlohmann::ordered_json j;
+    j["phase"] = phase_name(session.phase());
+    const std::optional<rules::Player> p = session.to_act();
+    j["to_act"] = p ? nlohmann::ordered_json(session.name(*p)) : nlohmann::ordered_json(nullptr);
+    j["moving"] = c.moving();
+    j["busy"] = c.busy();
+    j["view"] = view_name(view);
+    j["sound"] = s.sound;
+    j["power"] = c.aim().power;
+    j["shots"] = session.history().size();
+    j["game_number"] = session.game_number();
+    j["info"] = info_lines(session, c.call());
+    j["last_shot"] = c.last_shot_words();
+    j["refusal"] = c.refusal();
+    j["winner"] = session.winner() ? nlohmann::ordered_json(session.name(*session.winner())) : nlohmann::ordered_json(nullptr);
+    j["heading_deg"] = c.aim().heading_deg;
+    const auto cue = session.state().positions.find(0);
+    j["cue_ball"] = cue != session.state().positions.end() ? nlohmann::ordered_json::array({cue->second.x, cue->second.y})
+                                                           : nlohmann::ordered_json(nullptr);
+    j["balls_on_table"] = session.state().on_table.size();
+    return j.dump() + "\n";
+}
+
+void StatusFile::write(const std::string& text) {
+    if (text == last_) return;
+    try {
+        game::write_file_atomically(path_, text);
+        last_ = text;
+    } catch (const std::exception&) {
+        // a test hook: a failed write is retried at the next change
+    }
+}
+
+}  // namespace app
