@@ -16,6 +16,10 @@ nlohmann::ordered_json simulate_command(const nlohmann::json& input);
 /// `judge`: a game state and a shot's events → the verdict and the next state.
 nlohmann::ordered_json judge_command(const nlohmann::json& input);
 
+/// `decide`: a game's state (and a pending choice) → the AI's stroke, call, ball-in-hand spot,
+/// push-out or choice, its expected success, the simulations it ran and the seconds it took.
+nlohmann::ordered_json decide_command(const nlohmann::json& input);
+
 /// `bench --runs N`: simulates each standard scene `runs` times and reports timings.
 inline constexpr std::int64_t default_bench_runs = 2000;
 inline constexpr std::int64_t max_bench_runs = 1'000'000;

@@ -1,6 +1,7 @@
 // coolaaber-cli: the headless interface to the engine (cli-contract.md, docs/cli.md).
 //   coolaaber-cli simulate [FILE] [--pretty]
 //   coolaaber-cli judge [FILE] [--pretty]
+//   coolaaber-cli decide [FILE] [--pretty]
 //   coolaaber-cli bench [--runs N] [--pretty]
 //   coolaaber-cli match --game 8ball --players random,random [--games N] [--seed S] [--log FILE]
 //                       [--noise X] [--duplicate] [--pretty]
@@ -86,6 +87,8 @@ int main(int argc, char** argv) {
     CLI::App* simulate =
         app.add_subcommand("simulate", "Simulate one shot: balls, a strike → events");
     CLI::App* judge = app.add_subcommand("judge", "Apply the rules of a game to one shot's events");
+    CLI::App* decide =
+        app.add_subcommand("decide", "The computer player's decision in a position");
     CLI::App* bench = app.add_subcommand("bench", "Time the standard scenes");
     cli::MatchOptions match_options;
     CLI::App* match = app.add_subcommand("match", "Play whole games between two players");
@@ -100,10 +103,10 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     match->add_flag("--duplicate", match_options.duplicate,
                     "Play each seed twice, the sides swapped");
-    for (CLI::App* verb : {simulate, judge})
+    for (CLI::App* verb : {simulate, judge, decide})
         verb->add_option("FILE", file, "Input JSON document; - or absent: standard input");
     bench->add_option("--runs", runs, "Simulations per scene")->capture_default_str();
-    for (CLI::App* a : {&app, simulate, judge, bench, match})
+    for (CLI::App* a : {&app, simulate, judge, decide, bench, match})
         a->add_flag("--pretty", pretty, "Indent the output (default: one line)");
 
     try {
@@ -126,6 +129,10 @@ int main(int argc, char** argv) {
         } else if (judge->parsed()) {
             nlohmann::ordered_json out =
                 cli::judge_command(cli::parse_document(read_input(file)));
+            text = cli::write_document(out, pretty);
+        } else if (decide->parsed()) {
+            nlohmann::ordered_json out =
+                cli::decide_command(cli::parse_document(read_input(file)));
             text = cli::write_document(out, pretty);
         } else if (bench->parsed()) {
             nlohmann::ordered_json out = cli::bench_command(runs);

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "ai/ai_player.hpp"
 #include "cli/commands.hpp"
 #include "cli/json_in.hpp"
 #include "cli/json_out.hpp"
@@ -43,15 +44,12 @@ std::uint64_t derive(std::uint64_t seed, std::uint64_t tag) {
     return mix.next();
 }
 
-// "random" or "ai:LEVEL" (LEVEL 1–5; not available yet).
+// "random" or "ai:LEVEL" (LEVEL 1–5).
 std::string read_player(const std::string& kind) {
     if (kind == "random") return kind;
     if (kind.rfind("ai:", 0) == 0) {
         const std::string level = kind.substr(3);
-        if (level.size() == 1 && level[0] >= '1' && level[0] <= '5')
-            throw BadInput("--players", fmt::format("\"{}\": the AI player is not available yet; "
-                                                    "use \"random\" (e.g. --players random,random)",
-                                                    kind));
+        if (level.size() == 1 && level[0] >= '1' && level[0] <= '5') return kind;
         throw BadInput("--players", fmt::format("\"{}\": the AI levels are ai:1 to ai:5", kind));
     }
     throw BadInput(
@@ -88,8 +86,11 @@ std::uint64_t read_seed(const std::string& text) {
     return seed;
 }
 
-std::unique_ptr<game::Player> make_player(const std::string& kind, std::uint64_t seed) {
-    (void)kind;  // only "random" exists so far (read_player refuses the others)
+// An AI plans for the match's noise scale; play_game strokes with that scale × its level's
+// multiplier (game::Player::execution_noise).
+std::unique_ptr<game::Player> make_player(const std::string& kind, std::uint64_t seed,
+                                          double noise) {
+    if (kind.rfind("ai:", 0) == 0) return std::make_unique<ai::AiPlayer>(kind[3] - '0', seed, noise);
     return std::make_unique<game::RandomPlayer>(seed);
 }
 
@@ -164,7 +165,8 @@ nlohmann::ordered_json match_command(const MatchOptions& options) {
         const std::array<int, 2> who = swapped ? std::array{1, 0} : std::array{0, 1};
         std::array<std::unique_ptr<game::Player>, 2> players;
         for (int seat = 0; seat < 2; ++seat)
-            players[seat] = make_player(kinds[who[seat]], derive(game_seed, 1 + who[seat]));
+            players[seat] =
+                make_player(kinds[who[seat]], derive(game_seed, 1 + who[seat]), options.noise);
 
         game::Config config;
         config.game = *game;

@@ -108,8 +108,9 @@ TEST(Match, BadCommandLines) {
         std::string args, option, message;
     };
     const std::vector<Case> cases = {
-        {"--players ai:5,random", "--players", "not available yet"},
-        {"--players random,ai:3", "--players", "not available yet"},
+        {"--players ai:0,random", "--players", "ai:1 to ai:5"},
+        {"--players random,ai:35", "--players", "ai:1 to ai:5"},
+        {"--players ai:,random", "--players", "ai:1 to ai:5"},
         {"--players ai:9,random", "--players", "ai:1 to ai:5"},
         {"--players random", "--players", "two players"},
         {"--players random,human", "--players", "unknown player"},
@@ -134,7 +135,7 @@ TEST(Match, BadCommandLines) {
 
 TEST(Match, CommandFunctionThrowsBadInput) {
     cli::MatchOptions o;
-    o.players = "ai:5,ai:5";
+    o.players = "ai:6,ai:5";
     try {
         cli::match_command(o);
         FAIL();
