@@ -2,9 +2,11 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -53,13 +55,13 @@ Mesh upload(const std::vector<Vertex>& v) {
     return m;
 }
 
-GLuint upload_texture(const TextureData& t) {
+GLuint upload_texture(const TextureData& t, bool srgb = false) {
     GLuint tex = 0;
     glGenTextures(1, &tex);
     glBindTexture(GL_TEXTURE_2D, tex);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     const GLenum format = t.channels == 1 ? GL_RED : GL_RGB;
-    const GLint internal = t.channels == 1 ? GL_R8 : GL_RGB8;
+    const GLint internal = t.channels == 1 ? GL_R8 : srgb ? GL_SRGB8 : GL_RGB8;
     glTexImage2D(GL_TEXTURE_2D, 0, internal, t.width, t.height, 0, format, GL_UNSIGNED_BYTE, t.pixels.data());
     glGenerateMipmap(GL_TEXTURE_2D);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
@@ -137,17 +139,27 @@ struct Renderer::Impl {
     RenderSettings settings;
     TableDims dims;
     std::vector<PocketHole> holes;
-    Mesh cloth, cushions, rails;
+    /// The six holes (xy centre, z radius) in the shader's 3 x 2 grid: [ix + 3 iy], ix along x
+    /// (0 foot end ... 2), iy 0 south, 1 north.
+    std::array<glm::vec3, 6> hole_grid{};
+    Mesh cloth, cushions, rails, rail_tops;
     GLuint quad_vao = 0, quad_vbo = 0;
     GLuint solid_vao = 0, solid_vbo = 0;
-    GLuint table_prog = 0, ball_prog = 0, shadow_prog = 0, solid_prog = 0;
+    // The table's programs, one per material (cloth, cushion, wood), and the cloth's bake.
+    std::array<GLuint, 5> table_progs{};  // by TableMaterial; [3] bakes
+    GLuint ball_prog = 0, shadow_prog = 0, solid_prog = 0;
     GLuint cloth_tex = 0, wood_tex = 0, number_tex = 0;
+    // The cloth's view-independent light, baked once over the cloth's footprint.
+    GLuint cloth_light_tex = 0;
+    glm::vec4 bake_rect{0.0f};
     std::array<glm::vec4, 3> lamps;
     // The static table's cache (colour and depth), valid for `cache_key`.
     GLuint cache_fbo = 0, cache_colour = 0, cache_depth = 0;
     std::vector<float> cache_key;
 
     void draw_table(const glm::mat4& view_proj, const glm::vec3& eye);
+    void set_table_uniforms(GLuint prog, const glm::mat4& view_proj, const glm::vec3& eye) const;
+    void bake_cloth_light();
     bool use_cache(const FrameView& frame, int width, int height, const glm::mat4& view_proj);
     void free_cache() {
         if (cache_fbo) glDeleteFramebuffers(1, &cache_fbo);
@@ -168,31 +180,84 @@ struct Renderer::Impl {
         glUniform3fv(glGetUniformLocation(prog, "u_background"), 1, glm::value_ptr(kBackground));
         glUniform1f(glGetUniformLocation(prog, "u_fog_depth"), settings.fog ? dims.apron_depth * 0.9f : 0.0f);
         glUniform3fv(glGetUniformLocation(prog, "u_cloth_colour"), 1, glm::value_ptr(kClothColour));
+        const glm::vec3 cloth_linear = glm::pow(kClothColour, glm::vec3(2.2f));
+        glUniform3fv(glGetUniformLocation(prog, "u_cloth_linear"), 1, glm::value_ptr(cloth_linear));
     }
 };
 
+void Renderer::Impl::set_table_uniforms(GLuint prog, const glm::mat4& view_proj, const glm::vec3& eye) const {
+    set_common(prog, view_proj, eye);
+    glUniform1i(glGetUniformLocation(prog, "u_cloth_tex"), 0);
+    glUniform1i(glGetUniformLocation(prog, "u_wood_tex"), 1);
+    glUniform1i(glGetUniformLocation(prog, "u_cloth_light"), 3);
+    glUniform4fv(glGetUniformLocation(prog, "u_bake_rect"), 1, glm::value_ptr(bake_rect));
+    glUniform3fv(glGetUniformLocation(prog, "u_holes"), 6, glm::value_ptr(hole_grid[0]));
+    glUniform4f(glGetUniformLocation(prog, "u_table"), static_cast<float>(table.length()),
+                static_cast<float>(table.width()), dims.cushion_width, dims.rail_width);
+    const physics::Vec2 foot = table.foot_spot();
+    glUniform2f(glGetUniformLocation(prog, "u_foot_spot"), static_cast<float>(foot.x), static_cast<float>(foot.y));
+    glUniform1f(glGetUniformLocation(prog, "u_rail_height"), dims.rail_height);
+}
+
+void Renderer::Impl::bake_cloth_light() {
+    // The cloth quad covers the whole footprint; an orthographic view of exactly that
+    // rectangle puts one texel per fragment.
+    const float out = dims.cushion_width + dims.rail_width;
+    const float L = static_cast<float>(table.length()), W = static_cast<float>(table.width());
+    bake_rect = {-out, -out, L + 2 * out, W + 2 * out};
+    const int bw = 2048, bh = 1024;  // about 1.5 mm a texel on a 9 ft table
+    GLint previous_fbo = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous_fbo);
+    GLint previous_viewport[4] = {0, 0, 0, 0};
+    glGetIntegerv(GL_VIEWPORT, previous_viewport);
+    glGenTextures(1, &cloth_light_tex);
+    glBindTexture(GL_TEXTURE_2D, cloth_light_tex);
+    // RGBA8, not a float format: llvmpipe filters 8-bit textures on a much faster path.
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, bw, bh, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    GLuint fbo = 0;
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, cloth_light_tex, 0);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+        glDeleteFramebuffers(1, &fbo);
+        throw std::runtime_error("cannot bake the cloth's light: RGBA8 framebuffer incomplete");
+    }
+    glViewport(0, 0, bw, bh);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    const glm::mat4 ortho = glm::ortho(bake_rect.x, bake_rect.x + bake_rect.z, bake_rect.y, bake_rect.y + bake_rect.w, -1.0f, 1.0f);
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, wood_tex);
+    glActiveTexture(GL_TEXTURE0);
+    set_table_uniforms(table_progs[3], ortho, {L / 2, W / 2, 3.0f});
+    glBindVertexArray(cloth.vao);
+    glDrawArrays(GL_TRIANGLES, 0, cloth.count);
+    glBindVertexArray(0);
+    glDeleteFramebuffers(1, &fbo);
+    glBindTexture(GL_TEXTURE_2D, cloth_light_tex);
+    // Bilinear without mipmaps: the light is smooth, and llvmpipe samples this way fastest.
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previous_fbo));
+    glViewport(previous_viewport[0], previous_viewport[1], previous_viewport[2], previous_viewport[3]);
+}
+
 void Renderer::Impl::draw_table(const glm::mat4& view_proj, const glm::vec3& eye) {
-    set_common(table_prog, view_proj, eye);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, cloth_tex);
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, wood_tex);
-    glUniform1i(glGetUniformLocation(table_prog, "u_cloth_tex"), 0);
-    glUniform1i(glGetUniformLocation(table_prog, "u_wood_tex"), 1);
-    std::array<glm::vec3, 6> hole_uniforms{};
-    for (std::size_t i = 0; i < holes.size() && i < hole_uniforms.size(); ++i)
-        hole_uniforms[i] = {holes[i].centre, holes[i].radius};
-    glUniform3fv(glGetUniformLocation(table_prog, "u_holes"), 6, glm::value_ptr(hole_uniforms[0]));
-    glUniform1i(glGetUniformLocation(table_prog, "u_hole_count"), static_cast<GLint>(holes.size()));
-    glUniform4f(glGetUniformLocation(table_prog, "u_table"), static_cast<float>(table.length()),
-                static_cast<float>(table.width()), dims.cushion_width, dims.rail_width);
-    const physics::Vec2 foot = table.foot_spot();
-    glUniform2f(glGetUniformLocation(table_prog, "u_foot_spot"), static_cast<float>(foot.x), static_cast<float>(foot.y));
-    const GLint material = glGetUniformLocation(table_prog, "u_material");
-    int index = 0;
+    glActiveTexture(GL_TEXTURE3);
+    glBindTexture(GL_TEXTURE_2D, cloth_light_tex);
+    glActiveTexture(GL_TEXTURE0);
     // Rails and cushions first, so the depth test spares the cloth hidden under them.
-    for (const Mesh* mesh : {&rails, &cushions, &cloth}) {
-        glUniform1i(material, 2 - index++);
+    const std::array<std::pair<const Mesh*, GLuint>, 4> parts = {
+        {{&rail_tops, table_progs[4]}, {&rails, table_progs[2]}, {&cushions, table_progs[1]}, {&cloth, table_progs[0]}}};
+    for (const auto& [mesh, prog] : parts) {
+        set_table_uniforms(prog, view_proj, eye);
         glBindVertexArray(mesh->vao);
         glDrawArrays(GL_TRIANGLES, 0, mesh->count);
     }
@@ -250,10 +315,35 @@ Renderer::Renderer(const physics::Table& table, double ball_radius, RenderSettin
     m.settings = settings;
     m.dims = table_dims(table);
     m.holes = pocket_holes(table);
+    {
+        const float L = static_cast<float>(table.length()), W = static_cast<float>(table.width());
+        std::array<bool, 6> used{};
+        for (std::size_t i = 0; i < m.holes.size() && i < 6; ++i) {
+            const glm::vec2 c = m.holes[i].centre;
+            const int ix = std::clamp(static_cast<int>(std::floor(c.x / (0.5f * L) + 0.5f)), 0, 2);
+            const std::size_t k = static_cast<std::size_t>(ix + (c.y > 0.5f * W ? 3 : 0));
+            // A table whose pockets do not form the grid keeps them in order (hole_distance then
+            // only approximates the nearest).
+            const std::size_t slot = used[k] ? i : k;
+            used[slot] = true;
+            m.hole_grid[slot] = {c, m.holes[i].radius};
+        }
+    }
     const TableMesh mesh = build_table_mesh(table);
     m.cloth = upload(mesh.cloth);
     m.cushions = upload(mesh.cushions);
-    m.rails = upload(mesh.rails);
+    // The rail tops (flat, at rail height) apart from the bevels and sides: their diffuse
+    // light is baked.
+    std::vector<Vertex> tops, rest;
+    for (std::size_t i = 0; i + 2 < mesh.rails.size(); i += 3) {
+        bool top = true;
+        for (std::size_t k = i; k < i + 3; ++k)
+            top = top && std::abs(mesh.rails[k].normal.z) > 0.999f && std::abs(mesh.rails[k].pos.z - m.dims.rail_height) < 1e-5f;
+        (top ? tops : rest).insert((top ? tops : rest).end(), mesh.rails.begin() + static_cast<std::ptrdiff_t>(i),
+                                   mesh.rails.begin() + static_cast<std::ptrdiff_t>(i + 3));
+    }
+    m.rails = upload(rest);
+    m.rail_tops = upload(tops);
 
     const float corners[] = {-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1};
     glGenVertexArrays(1, &m.quad_vao);
@@ -275,12 +365,14 @@ Renderer::Renderer(const physics::Table& table, double ball_radius, RenderSettin
     }
     glBindVertexArray(0);
 
-    m.table_prog = build_program(glsl::kTableVert, glsl::kTableFrag);
+    for (int i = 0; i < 5; ++i)
+        m.table_progs[static_cast<std::size_t>(i)] =
+            build_program(glsl::kTableVert, table_fragment_source(static_cast<TableMaterial>(i)));
     m.ball_prog = build_program(glsl::kBallVert, glsl::kBallFrag);
     m.shadow_prog = build_program(glsl::kShadowVert, glsl::kShadowFrag);
     m.solid_prog = build_program(glsl::kSolidVert, glsl::kSolidFrag);
     m.cloth_tex = upload_texture(make_cloth_texture());
-    m.wood_tex = upload_texture(make_wood_texture());
+    m.wood_tex = upload_texture(make_wood_texture(), true);
     m.number_tex = upload_texture(make_number_atlas(settings.number_font));
     // Mipmaps down to 4 texels a cell, so far-away numbers blur instead of mixing cells.
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 4);
@@ -291,11 +383,12 @@ Renderer::Renderer(const physics::Table& table, double ball_radius, RenderSettin
     const float L = static_cast<float>(table.length()), W = static_cast<float>(table.width());
     for (int i = 0; i < 3; ++i)
         m.lamps[static_cast<std::size_t>(i)] = {L * (0.5f + 0.3f * static_cast<float>(i - 1)), W / 2, 1.0f, 0.16f};
+    m.bake_cloth_light();
 }
 
 Renderer::~Renderer() {
     Impl& m = *impl_;
-    for (Mesh* mesh : {&m.cloth, &m.cushions, &m.rails}) {
+    for (Mesh* mesh : {&m.cloth, &m.cushions, &m.rails, &m.rail_tops}) {
         glDeleteBuffers(1, &mesh->vbo);
         glDeleteVertexArrays(1, &mesh->vao);
     }
@@ -303,7 +396,9 @@ Renderer::~Renderer() {
     glDeleteVertexArrays(1, &m.quad_vao);
     glDeleteBuffers(1, &m.solid_vbo);
     glDeleteVertexArrays(1, &m.solid_vao);
-    for (GLuint p : {m.table_prog, m.ball_prog, m.shadow_prog, m.solid_prog}) glDeleteProgram(p);
+    for (GLuint p : m.table_progs) glDeleteProgram(p);
+    for (GLuint p : {m.ball_prog, m.shadow_prog, m.solid_prog}) glDeleteProgram(p);
+    glDeleteTextures(1, &m.cloth_light_tex);
     glDeleteTextures(1, &m.cloth_tex);
     glDeleteTextures(1, &m.wood_tex);
     glDeleteTextures(1, &m.number_tex);

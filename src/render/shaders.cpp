@@ -66,6 +66,7 @@ uniform vec3 u_background;   // linear
 uniform float u_fog_depth;   // below the cloth, the depth at which the fog is complete (unit: m); 0: off
 
 vec3 to_linear(vec3 c) { return pow(c, vec3(2.2)); }
+uniform vec3 u_cloth_linear;  // the cloth's colour, linear (to_linear(u_cloth_colour), set once)
 
 // Direct light from the lamps on a surface at p with normal n: diffuse irradiance and
 // Blinn-Phong specular toward the eye (exponent `shine`, weight `spec`).
@@ -102,7 +103,10 @@ vec3 lamps_diffuse(vec3 p, vec3 n, vec3 albedo) {
 vec3 tone_map(vec3 c) {
     c *= u_exposure;
     c = clamp((c * (2.51 * c + 0.03)) / (c * (2.43 * c + 0.59) + 0.14), 0.0, 1.0);
-    return pow(c, vec3(1.0 / 2.2));
+    // Display gamma 2.2 without pow (which llvmpipe evaluates slowly, per channel): with
+    // s = sqrt(c), s (1.2 - 0.2 s) is within 0.02 of c^(1/2.2) over [0.001, 1].
+    vec3 s = sqrt(c);
+    return s * (1.2 - 0.2 * s);
 }
 
 // Height fog: the table below the cloth fades into the room's darkness.
@@ -129,29 +133,36 @@ void main() {
 }
 )";
 
+// The table's materials. The program is built once per material with `kMaterial` set
+// (table_fragment_source; 4 is the rail tops): llvmpipe runs both sides of every branch, so one shader for all
+// materials would pay for all of them on every pixel. The cloth's light is view-independent
+// (diffuse lamps, painted pockets, liner, foot spot), so material 3 bakes it once into a
+// texture over the table's footprint and the cloth (material 0) only samples it; so does
+// the rail tops' diffuse light, wood grain, sights and leather lips (material 4 adds highlights).
 const char* const kTableFrag = R"(
 in vec3 v_pos;
 in vec3 v_normal;
 in vec2 v_uv;
 layout(location = 0) out vec4 o_colour;
-uniform int u_material;        // 0 cloth, 1 cushion, 2 wood
 uniform sampler2D u_cloth_tex;
 uniform sampler2D u_wood_tex;
-uniform vec3 u_holes[6];       // xy centre, z radius (unit: m)
-uniform int u_hole_count;
+uniform sampler2D u_cloth_light; // baked by material 3: sqrt of the linear colour at mean nap, nap weight in a
+uniform vec4 u_bake_rect;        // the baked texture's footprint: xy min corner, zw size (unit: m)
+uniform vec3 u_holes[6];       // xy centre, z radius (unit: m), as a 3 x 2 grid (hole_distance)
 uniform vec4 u_table;          // length, width, cushion width, rail width (unit: m)
 uniform vec3 u_cloth_colour;   // sRGB
 uniform vec2 u_foot_spot;
+uniform float u_rail_height;   // (unit: m)
 
+// Distance to the nearest pocket hole's edge (negative inside). The holes come in a 3 x 2
+// grid (u_holes[ix + 3 iy]: ix 0..2 along x, iy 0 south, 1 north), so the nearest is found
+// from the position instead of a loop over all six.
 float hole_distance(vec2 p, out float radius) {
-    float best = 1e9;
-    radius = 0.0;
-    for (int i = 0; i < 6; ++i) {
-        if (i >= u_hole_count) break;
-        float d = length(p - u_holes[i].xy) - u_holes[i].z;
-        if (d < best) { best = d; radius = u_holes[i].z; }
-    }
-    return best;
+    int ix = int(clamp(floor(p.x / (0.5 * u_table.x) + 0.5), 0.0, 2.0));
+    int iy = p.y > 0.5 * u_table.y ? 1 : 0;
+    vec3 h = u_holes[ix + 3 * iy];
+    radius = h.z;
+    return length(p - h.xy) - h.z;
 }
 
 // Mother-of-pearl sights: three per short rail, six per long rail, on the rail's centre line.
@@ -174,51 +185,125 @@ float diamond(vec2 p) {
     return best;
 }
 
+// x^(2^k) by k squarings: a highlight's power without llvmpipe's slow pow.
+float pow2k(float x, int k) {
+    for (int i = 0; i < k; ++i) x *= x;
+    return x;
+}
+
+// The lamps' highlights alone (the rail tops, whose diffuse light is baked); Blinn-Phong with
+// the exponent 2^k.
+vec3 lamps_specular(vec3 p, vec3 n, int k, float spec) {
+    vec3 v = normalize(u_eye - p);
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < 3; ++i) {
+        vec3 d = u_lamps[i].xyz - p;
+        float inv = inversesqrt(dot(d, d));
+        vec3 l = d * inv;
+        float x = max(dot(n, normalize(l + v)), 0.0);
+        sum += vec3(smoothstep(0.25, 0.6, l.z) * pow2k(x, k) * (inv * inv));
+    }
+    float shine = float(1 << k);
+    return u_lamp_colour * sum * (spec * (shine + 8.0) / 25.0);
+}
+
+// lamps_light with the exponent 2^k, by squarings.
+vec3 lamps_light_cheap(vec3 p, vec3 n, vec3 albedo, int k, float spec) {
+    vec3 v = normalize(u_eye - p);
+    float shine = float(1 << k);
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < 3; ++i) {
+        vec3 d = u_lamps[i].xyz - p;
+        float inv = inversesqrt(dot(d, d));
+        vec3 l = d * inv;
+        float cone = smoothstep(0.25, 0.6, l.z);
+        float ndl = dot(n, l);
+        float s = spec * pow2k(max(dot(n, normalize(l + v)), 0.0), k) * (shine + 8.0) / 25.0;
+        sum += cone * (albedo * max(ndl, 0.0) + s * step(0.0, ndl)) * (inv * inv);
+    }
+    return u_lamp_colour * sum;
+}
+
 void main() {
+    vec3 c;
+    if (kMaterial == 0) {
+        // The cloth: baked light times this pixel's nap.
+        float nap = texture(u_cloth_tex, v_uv * 12.0).r;
+        vec4 baked = texture(u_cloth_light, (v_pos.xy - u_bake_rect.xy) / u_bake_rect.zw);
+        c = baked.rgb * baked.rgb * (1.0 + baked.a * (0.56 * nap - 0.28));
+        // Under the rail tops the texture holds the rail's light; what shows of the cloth
+        // there (through the holes, past their edge) is the pocket's black leather liner.
+        float ox = max(-v_pos.x, v_pos.x - u_table.x), oy = max(-v_pos.y, v_pos.y - u_table.y);
+        float under_rail = step(u_table.z - 0.0005, max(ox, oy)) * step(0.1, baked.a);
+        c = mix(c, vec3(0.012, 0.010, 0.009), under_rail);
+        o_colour = vec4(tone_map(c), 1.0);  // the cloth is at z = 0: no fog
+        return;
+    }
     vec3 n = normalize(v_normal);
     if (dot(n, u_eye - v_pos) < 0.0) n = -n;
     float hole_r = 0.0;
-    // Only near the edges can a point be in or near a pocket.
-    bool inner = v_pos.x > 0.15 && v_pos.x < u_table.x - 0.15 && v_pos.y > 0.15 && v_pos.y < u_table.y - 0.15;
-    float hd = inner ? 1.0 : hole_distance(v_pos.xy, hole_r);
-    vec3 c;
-    if (u_material == 0) {
-        vec3 albedo = to_linear(u_cloth_colour);
-        float nap = texture(u_cloth_tex, v_uv * 12.0).r;
-        albedo *= 0.72 + 0.56 * nap;
+    float hd = hole_distance(v_pos.xy, hole_r);
+    if (kMaterial == 3) {
+        // Baking the cloth (seen from above, n = +z): the light at the mean nap (the nap
+        // factor 0.72 + 0.56 nap is 1 at nap = 0.5) and in a, how much of it the nap modulates.
+        vec3 albedo = u_cloth_linear;
         // Foot spot.
         albedo = mix(albedo, vec3(0.75), 1.0 - smoothstep(0.006, 0.0075, length(v_pos.xy - u_foot_spot)));
-        c = lamps_diffuse(v_pos, n, albedo) + albedo * 0.035;
+        vec3 cloth = lamps_diffuse(v_pos, vec3(0.0, 0.0, 1.0), albedo) + albedo * 0.035;
         // Beyond the cushion noses and outside the hole: the pocket's black leather liner.
         float outside = max(max(-v_pos.x, v_pos.x - u_table.x), max(-v_pos.y, v_pos.y - u_table.y));
-        c = mix(c, vec3(0.012, 0.010, 0.009), smoothstep(0.0, 0.006, outside));
+        float liner = smoothstep(0.0, 0.006, outside);
+        vec3 liner_c = vec3(0.012, 0.010, 0.009);
+        float edge = mix(0.35, 1.0, smoothstep(0.0, 0.012, hd));  // the cloth turning down over the slate edge
+        vec3 napped = cloth * (1.0 - liner) * edge, plain = liner_c * liner * edge;
         if (hd < 0.0) {
             // The pocket: dark inside, a little light on the far wall of the hole.
             float depth = clamp(-hd / hole_r, 0.0, 1.0);
-            c = mix(vec3(0.018, 0.016, 0.014), vec3(0.002), sqrt(depth));
-        } else {
-            c *= mix(0.35, 1.0, smoothstep(0.0, 0.012, hd));  // the cloth turning down over the slate edge
+            napped = vec3(0.0);
+            plain = mix(vec3(0.018, 0.016, 0.014), vec3(0.002), sqrt(depth));
         }
-    } else if (u_material == 1) {
-        if (hd < 0.0) discard;
-        vec3 albedo = to_linear(u_cloth_colour) * 0.92;
+        vec3 sum = napped + plain;
+        float weight = dot(napped, vec3(1.0)) / max(dot(sum, vec3(1.0)), 1e-6);
+        // Beyond the cushions' backs: the rail top, at rail height; its diffuse light, and in
+        // a its specular weight (1 on the wood; 0 in the holes, where the rail top is cut away
+        // and the cloth pass shows the pocket's colour, which has no nap either).
+        float ox = max(-v_pos.x, v_pos.x - u_table.x), oy = max(-v_pos.y, v_pos.y - u_table.y);
+        if (max(ox, oy) > u_table.z - 0.0005 && hd >= 0.0) {
+            // The rails' texture coordinates as the mesh has them: along the rail, and across
+            // from the cushion back; the four trapezoids meet on the corners' diagonals.
+            vec2 ruv = ox > oy ? vec2(v_pos.y, ox - u_table.z) : vec2(v_pos.x, oy - u_table.z);
+            vec3 wood = texture(u_wood_tex, vec2(ruv.x / 1.3, ruv.y / 0.16)).rgb;  // sRGB texture: linear
+            float pearl = 1.0 - smoothstep(0.007, 0.0085, diamond(v_pos.xy));
+            wood = mix(wood, vec3(0.85, 0.83, 0.78), pearl);
+            float lip = 1.0 - smoothstep(0.010, 0.013, hd);
+            wood = mix(wood, vec3(0.012, 0.010, 0.009), lip);
+            vec3 top = vec3(v_pos.xy, u_rail_height);
+            vec3 lit = lamps_diffuse(top, vec3(0.0, 0.0, 1.0), wood) + wood * 0.06;
+            o_colour = vec4(sqrt(lit), mix(1.0, 0.2, lip));
+            return;
+        }
+        o_colour = vec4(sqrt(sum), weight);  // stored as RGBA8: square-root coding keeps the dark tones
+        return;
+    }
+    if (kMaterial == 4) {
+        // The rail tops: the baked diffuse light and the lamps' highlights, view-dependent.
+        vec4 baked = texture(u_cloth_light, (v_pos.xy - u_bake_rect.xy) / u_bake_rect.zw);
+        if (baked.a < 0.1) discard;  // a pocket hole
+        c = baked.rgb * baked.rgb + lamps_specular(v_pos, vec3(0.0, 0.0, 1.0), 6, 0.25 * baked.a);
+        o_colour = vec4(tone_map(c), 1.0);  // above the cloth: no fog
+        return;
+    }
+    if (hd < 0.0) discard;
+    if (kMaterial == 1) {
+        vec3 albedo = u_cloth_linear * 0.92;
         float nap = texture(u_cloth_tex, v_uv * 12.0).r;
         albedo *= 0.8 + 0.4 * nap;
-        c = lamps_light(v_pos, n, albedo, 8.0, 0.015) + albedo * 0.035;
+        c = lamps_light_cheap(v_pos, n, albedo, 3, 0.015) + albedo * 0.035;
     } else {
-        if (hd < 0.0) discard;
-        vec3 albedo = to_linear(texture(u_wood_tex, vec2(v_uv.x / 1.3, v_uv.y / 0.16)).rgb);
-        float shine = 60.0, spec = 0.25;
-        if (n.z > 0.9) {
-            float dm = diamond(v_pos.xy);
-            float pearl = 1.0 - smoothstep(0.007, 0.0085, dm);
-            albedo = mix(albedo, vec3(0.85, 0.83, 0.78), pearl);
-            // The pocket's leather lip round the hole.
-            float lip = 1.0 - smoothstep(0.010, 0.013, hd);
-            albedo = mix(albedo, vec3(0.012, 0.010, 0.009), lip);
-            spec = mix(spec, 0.05, lip);
-        }
-        c = lamps_light(v_pos, n, albedo, shine, spec) + albedo * 0.06;
+        vec3 albedo = texture(u_wood_tex, vec2(v_uv.x / 1.3, v_uv.y / 0.16)).rgb;  // an sRGB texture: linear when sampled
+        // The bevels and the table's sides (the rail tops are material 4).
+        float spec = 0.25;
+        c = lamps_light_cheap(v_pos, n, albedo, 6, spec) + albedo * 0.06;
     }
     o_colour = vec4(tone_map(apply_fog(c, v_pos)), 1.0);
 }
@@ -263,7 +348,7 @@ uniform vec3 u_cloth_colour;  // sRGB, for the reflection of the table
 vec3 environment(vec3 r, vec3 p) {
     vec3 env;
     if (r.z < 0.0) {
-        env = to_linear(u_cloth_colour) * 0.8 * smoothstep(-0.02, -0.3, r.z);
+        env = u_cloth_linear * 0.8 * smoothstep(-0.02, -0.3, r.z);
     } else {
         env = vec3(0.012, 0.011, 0.010);
     }
@@ -306,10 +391,11 @@ void main() {
     albedo = to_linear(albedo);
 
     float ndv = max(dot(n, -dir), 0.0);
-    float fresnel = 0.04 + 0.96 * pow(1.0 - ndv, 5.0);
+    float m = 1.0 - ndv, m2 = m * m;
+    float fresnel = 0.04 + 0.96 * m2 * m2 * m;
     vec3 diffuse = lamps_light(p, n, albedo, 400.0, 0.6);
     // Ambient: light bounced off the cloth from below, the dim room above.
-    vec3 ambient = albedo * mix(to_linear(u_cloth_colour) * 0.9, vec3(0.06), 0.5 + 0.5 * n.z);
+    vec3 ambient = albedo * mix(u_cloth_linear * 0.9, vec3(0.06), 0.5 + 0.5 * n.z);
     // The ball's contact with the cloth darkens its very bottom.
     ambient *= smoothstep(-1.0, -0.6, n.z);
     vec3 r = reflect(dir, n);
@@ -405,5 +491,9 @@ void main() {
 )";
 
 }  // namespace glsl
+
+std::string table_fragment_source(TableMaterial material) {
+    return "const int kMaterial = " + std::to_string(static_cast<int>(material)) + ";\n" + glsl::kTableFrag;
+}
 
 }  // namespace render

@@ -15,10 +15,15 @@ std::string shader_source(std::string_view body, GlslTarget target = GlslTarget:
 /// Compiles and links a program; throws std::runtime_error with the info log on failure.
 unsigned build_program(std::string_view vertex_body, std::string_view fragment_body);
 
+/// The table shader's materials, each its own program.
+enum class TableMaterial { cloth = 0, cushion = 1, wood = 2, cloth_bake = 3, rail_top = 4 };
+/// glsl::kTableFrag specialised for one material.
+std::string table_fragment_source(TableMaterial material);
+
 namespace glsl {
 extern const char* const kCommon;       ///< lamps, tone mapping, fog (included by the fragment shaders)
 extern const char* const kTableVert;
-extern const char* const kTableFrag;
+extern const char* const kTableFrag;    ///< needs `const int kMaterial` first: table_fragment_source
 extern const char* const kBallVert;
 extern const char* const kBallFrag;
 extern const char* const kShadowVert;
