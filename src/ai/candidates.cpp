@@ -18,10 +18,19 @@ using physics::Vec2;
 struct Spin {
     double side, top;
 };
-// Stun, follow, draw, then right and left side: the first `effort.spins` are tried.
-constexpr std::array<Spin, 5> spins{{{0.0, 0.0}, {0.0, 0.3}, {0.0, -0.35}, {0.25, 0.0}, {-0.25, 0.0}}};
+// Stun, follow, draw, right and left side, then side with follow or draw: the first
+// `effort.spins` are tried.
+constexpr std::array<Spin, 9> spins{{{0.0, 0.0},
+                                     {0.0, 0.3},
+                                     {0.0, -0.35},
+                                     {0.25, 0.0},
+                                     {-0.25, 0.0},
+                                     {0.2, 0.25},
+                                     {-0.2, 0.25},
+                                     {0.2, -0.3},
+                                     {-0.2, -0.3}}};
 // Multiples of the speed that just gets the object ball to the pocket, most useful first.
-constexpr std::array<double, 5> pot_speed_factors{1.3, 2.1, 1.0, 3.2, 4.6};
+constexpr std::array<double, 7> pot_speed_factors{1.3, 2.1, 1.0, 3.2, 4.6, 1.65, 2.6};
 constexpr std::array<double, 5> safety_speeds{0.55, 1.0, 1.7, 2.6, 4.0};  // (unit: m/s)
 constexpr std::array<double, 2> kick_speeds{1.6, 3.2};                    // (unit: m/s)
 constexpr double min_speed = 0.25, max_speed = 8.0;                      // (unit: m/s)

@@ -44,7 +44,7 @@ double pocket_half_width(const physics::Table& table, const physics::Pocket& p, 
     const double limit = is_side(p) ? std::cos(55.0 * deg) : std::cos(62.0 * deg);
     if (c < limit) return 0.0;
     const double look = is_side(p) ? c * std::sqrt(c) : c;
-    return std::max(0.0, 0.5 * mouth * look - 0.85 * radius);
+    return std::max(0.0, 0.5 * mouth * look - 0.45 * radius);
 }
 
 }  // namespace

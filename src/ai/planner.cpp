@@ -18,6 +18,7 @@ namespace ai {
 namespace {
 
 constexpr double good_enough = 0.5;  // below this nominal value, kicks and banks are tried too
+constexpr double miss_value = 0.4;   // a rough value of missing a pot, for the shortlist only
 
 struct Search {
     const Position& pos;
@@ -41,7 +42,11 @@ void score_nominal(Search& s, std::vector<Candidate>& cands, std::vector<Score>&
     parallel_for(cands.size() - from, s.workers, [&](std::size_t k) {
         const std::size_t i = from + k;
         const Trial t = s.eval.nominal(cands[i]);
-        nominal[i] = Score{t.value, t.success ? 1.0 : 0.0, 1, t.foul};
+        // A pot that works without noise still misses now and then: rank by its chance.
+        const double value = cands[i].kind == Kind::pot && s.eval.scale() > 0.0
+                                 ? cands[i].prior * t.value + (1.0 - cands[i].prior) * miss_value
+                                 : t.value;
+        nominal[i] = Score{value, t.success ? 1.0 : 0.0, 1, t.foul};
     });
     s.simulations += static_cast<std::int64_t>(cands.size() - from);
 }
@@ -114,6 +119,7 @@ Plan plan_break(Search& s) {
     const std::size_t best = best_of(scores, all_indices(cands.size()), 1).front();
     Plan p;
     p.decision = decision_of(cands[best]);
+    p.kind = cands[best].kind;
     p.expected_success = scores[best].success;
     p.simulations = s.simulations;
     return p;
@@ -199,6 +205,7 @@ Plan plan(const Position& pos, const PlanSettings& settings, std::uint64_t seed)
 
     Plan out;
     out.decision = decision_of(chosen);
+    out.kind = chosen.kind;
     out.expected_success = chosen_success;
     out.simulations = s.simulations;
     return out;

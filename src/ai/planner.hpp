@@ -13,6 +13,7 @@
 
 #include <cstdint>
 
+#include "ai/candidates.hpp"
 #include "ai/position.hpp"
 #include "game/player.hpp"
 
@@ -28,6 +29,7 @@ struct Plan {
     game::Decision decision;
     double expected_success = 0.0;  ///< pots: chance to stay at the table; safeties: of no foul
     std::int64_t simulations = 0;   ///< physics simulations run for this decision
+    Kind kind = Kind::pot;          ///< what sort of stroke it is (a choice: Kind::pot, unused)
 };
 
 Plan plan(const Position& pos, const PlanSettings& settings, std::uint64_t seed);
