@@ -18,14 +18,18 @@ glm::mat4 Camera::projection(float aspect) const {
 Camera overhead_camera(const physics::Table& table, float aspect) {
     const TableDims dims = table_dims(table);
     const float margin = 0.04f;
-    const float half_x = static_cast<float>(table.length()) / 2 + dims.cushion_width + dims.rail_width + margin;
-    const float half_y = static_cast<float>(table.width()) / 2 + dims.cushion_width + dims.rail_width + margin;
+    const float out = dims.cushion_width + dims.rail_width;
+    const float half_x = static_cast<float>(table.length()) / 2 + out + margin;
+    // From the tray's outer wall on the south side to the north rail's edge.
+    const float y0 = -out - dims.tray_width - 2 * dims.tray_wall - margin;
+    const float y1 = static_cast<float>(table.width()) + out + margin;
+    const float half_y = (y1 - y0) / 2;
     Camera c;
     c.fovy_deg = 36.0f;
     const float t = std::tan(glm::radians(c.fovy_deg) / 2);
     // Distance to the rail top so that both half extents fit.
     const float d = std::max(half_y / t, half_x / (t * aspect));
-    const glm::vec3 centre{static_cast<float>(table.length()) / 2, static_cast<float>(table.width()) / 2, 0.0f};
+    const glm::vec3 centre{static_cast<float>(table.length()) / 2, (y0 + y1) / 2, 0.0f};
     c.target = centre;
     c.eye = centre + glm::vec3(0, 0, d + dims.rail_height);
     c.up = {0, 1, 0};
@@ -43,6 +47,60 @@ Camera cue_ball_camera(glm::vec2 cue_ball, float heading, float distance, float 
     c.fovy_deg = 45.0f;
     c.near_m = 0.02f;
     c.far_m = 10.0f;
+    return c;
+}
+
+Camera orbit_camera(glm::vec3 target, float yaw_rad, float pitch_rad, float distance_m) {
+    Camera c;
+    const float cp = std::cos(pitch_rad), sp = std::sin(pitch_rad);
+    const glm::vec3 forward{cp * std::cos(yaw_rad), cp * std::sin(yaw_rad), -sp};
+    c.target = target;
+    c.eye = target - distance_m * forward;
+    c.up = {sp * std::cos(yaw_rad), sp * std::sin(yaw_rad), cp};
+    c.fovy_deg = 45.0f;
+    c.near_m = std::clamp(0.02f * distance_m, 0.01f, 0.1f);
+    c.far_m = distance_m + 8.0f;
+    return c;
+}
+
+Camera lerp(const Camera& a, const Camera& b, float t) {
+    t = std::clamp(t, 0.0f, 1.0f);
+    Camera c;
+    c.target = glm::mix(a.target, b.target, t);
+    const glm::vec3 da = a.eye - a.target, db = b.eye - b.target;
+    const float la = glm::length(da), lb = glm::length(db);
+    if (la > 1e-6f && lb > 1e-6f) {
+        // The eye's direction from the target by slerp, its distance geometrically.
+        const glm::vec3 ua = da / la, ub = db / lb;
+        const float cos_w = std::clamp(glm::dot(ua, ub), -1.0f, 1.0f);
+        const float w = std::acos(cos_w);
+        glm::vec3 u;
+        if (w < 1e-4f) {
+            u = glm::normalize(glm::mix(ua, ub, t));
+        } else if (w > 3.1415f) {
+            // Opposite directions: swing over the top.
+            const glm::vec3 side = glm::normalize(glm::cross(ua, std::abs(ua.z) < 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0)));
+            const glm::vec3 over = glm::cross(side, ua);
+            u = std::cos(w * t) * ua + std::sin(w * t) * over;
+        } else {
+            u = (std::sin((1 - t) * w) * ua + std::sin(t * w) * ub) / std::sin(w);
+        }
+        c.eye = c.target + la * std::pow(lb / la, t) * u;
+    } else {
+        c.eye = glm::mix(a.eye, b.eye, t);
+    }
+    // Up: interpolated, then made square to the view so lookAt never degenerates.
+    const glm::vec3 f = c.target - c.eye;
+    glm::vec3 up = glm::mix(a.up, b.up, t);
+    if (glm::length(f) > 1e-6f) {
+        const glm::vec3 fn = glm::normalize(f);
+        up -= glm::dot(up, fn) * fn;
+        if (glm::length(up) < 1e-4f) up = glm::cross(glm::cross(fn, b.up), fn);
+    }
+    c.up = glm::length(up) > 1e-6f ? glm::normalize(up) : b.up;
+    c.fovy_deg = glm::mix(a.fovy_deg, b.fovy_deg, t);
+    c.near_m = a.near_m * std::pow(b.near_m / a.near_m, t);
+    c.far_m = glm::mix(a.far_m, b.far_m, t);
     return c;
 }
 

@@ -1,7 +1,8 @@
 // coolaaber-render-bench: renders the mid-game scene (the break, balls moving, shadows and
 // fog on) offscreen and prints one JSON line: frame-time median and 95th percentile, fps.
 //   coolaaber-render-bench [--size 1280x720] [--frames 300] [--samples 4] [--scene mid_game]
-//                          [--png out.png]   (scenes: mid_game, racked, mid_roll, cue_view)
+//                          [--png out.png]   (scenes: mid_game, racked, mid_roll, cue_view,
+//                          ball_in_hand)
 #include <epoxy/gl.h>
 
 #include <algorithm>
@@ -55,8 +56,9 @@ int main(int argc, char** argv) {
             else if (scene_name == "racked") scenes.push_back(render::racked_scene(aspect));
             else if (scene_name == "mid_roll") scenes.push_back(render::mid_roll_scene(aspect));
             else if (scene_name == "cue_view") scenes.push_back(render::cue_view_scene(aspect));
+            else if (scene_name == "ball_in_hand") scenes.push_back(render::ball_in_hand_scene(aspect));
             else {
-                std::fprintf(stderr, "--scene: expected mid_game, racked, mid_roll or cue_view\n");
+                std::fprintf(stderr, "--scene: expected mid_game, racked, mid_roll, cue_view or ball_in_hand\n");
                 return 2;
             }
         }

@@ -106,6 +106,26 @@ void add_ribbon(std::vector<SolidVertex>& out, const std::vector<glm::vec2>& lin
     }
 }
 
+/// A box-shaped slab from `lo` to `hi` (axis-aligned), all six faces.
+void add_box(std::vector<SolidVertex>& out, glm::vec3 lo, glm::vec3 hi, glm::vec3 colour) {
+    const glm::vec3 p[8] = {{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z},
+                            {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}};
+    const int faces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+    const glm::vec3 normals[6] = {{0, 0, -1}, {0, 0, 1}, {0, -1, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}};
+    for (int f = 0; f < 6; ++f) {
+        const auto v = [&](int k) { return SolidVertex{p[faces[f][k]], normals[f], colour}; };
+        out.insert(out.end(), {v(0), v(1), v(2), v(0), v(2), v(3)});
+    }
+}
+
+/// A flat quad on the cloth (z) from `lo` to `hi`.
+void add_patch(std::vector<SolidVertex>& out, glm::vec2 lo, glm::vec2 hi, float z, glm::vec3 colour) {
+    const glm::vec3 up{0, 0, 1};
+    const SolidVertex a{{lo.x, lo.y, z}, up, colour}, b{{hi.x, lo.y, z}, up, colour}, c{{hi.x, hi.y, z}, up, colour},
+        d{{lo.x, hi.y, z}, up, colour};
+    out.insert(out.end(), {a, b, c, a, c, d});
+}
+
 void add_ring(std::vector<SolidVertex>& out, glm::vec2 centre, float radius, float half_width, float z,
               glm::vec3 colour) {
     std::vector<glm::vec2> circle;
@@ -158,6 +178,9 @@ struct Renderer::Impl {
     std::vector<float> cache_key;
 
     void draw_table(const glm::mat4& view_proj, const glm::vec3& eye);
+    /// Flat (lit = false, blended with `alpha`, no depth writes) or lit solid geometry.
+    void draw_solid(const std::vector<SolidVertex>& v, bool lit, float alpha, const glm::mat4& view_proj,
+                    const glm::vec3& eye);
     void set_table_uniforms(GLuint prog, const glm::mat4& view_proj, const glm::vec3& eye) const;
     void bake_cloth_light();
     bool use_cache(const FrameView& frame, int width, int height, const glm::mat4& view_proj);
@@ -260,6 +283,28 @@ void Renderer::Impl::draw_table(const glm::mat4& view_proj, const glm::vec3& eye
         set_table_uniforms(prog, view_proj, eye);
         glBindVertexArray(mesh->vao);
         glDrawArrays(GL_TRIANGLES, 0, mesh->count);
+    }
+}
+
+void Renderer::Impl::draw_solid(const std::vector<SolidVertex>& v, bool lit, float alpha, const glm::mat4& view_proj,
+                                const glm::vec3& eye) {
+    if (v.empty()) return;
+    set_common(solid_prog, view_proj, eye);
+    glUniform1i(glGetUniformLocation(solid_prog, "u_lit"), lit ? 1 : 0);
+    glUniform1f(glGetUniformLocation(solid_prog, "u_alpha"), alpha);
+    const bool blend = alpha < 1.0f;
+    if (blend) {
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glDepthMask(GL_FALSE);
+    }
+    glBindVertexArray(solid_vao);
+    glBindBuffer(GL_ARRAY_BUFFER, solid_vbo);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(v.size() * sizeof(SolidVertex)), v.data(), GL_STREAM_DRAW);
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(v.size()));
+    if (blend) {
+        glDepthMask(GL_TRUE);
+        glDisable(GL_BLEND);
     }
 }
 
@@ -453,19 +498,41 @@ void Renderer::draw(const FrameView& frame, int width, int height) {
         add_ribbon(guide, aim.cue_after, 0.0009f, 0.0006f, {0.6f, 0.8f, 1.0f});
         if (aim.ghost) add_ring(guide, *aim.ghost, m.radius, 0.0012f, 0.0007f, {0.95f, 0.95f, 0.95f});
     }
-    if (!guide.empty()) {
-        m.set_common(m.solid_prog, view_proj, eye);
-        glUniform1i(glGetUniformLocation(m.solid_prog, "u_lit"), 0);
-        glUniform1f(glGetUniformLocation(m.solid_prog, "u_alpha"), 0.7f);
-        glEnable(GL_BLEND);
-        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-        glDepthMask(GL_FALSE);
-        glBindVertexArray(m.solid_vao);
-        glBindBuffer(GL_ARRAY_BUFFER, m.solid_vbo);
-        glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(guide.size() * sizeof(SolidVertex)), guide.data(), GL_STREAM_DRAW);
-        glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(guide.size()));
-        glDepthMask(GL_TRUE);
-        glDisable(GL_BLEND);
+    m.draw_solid(guide, false, 0.7f, view_proj, eye);
+
+    // 3b. Ball in hand: the kitchen shaded when placement is restricted to it, a ring on the
+    // cloth round the cue ball's place.
+    const float L = static_cast<float>(m.table.length()), W = static_cast<float>(m.table.width());
+    const glm::vec3 red{0.95f, 0.12f, 0.08f};
+    if (frame.ball_in_hand) {
+        const BallInHandView& h = *frame.ball_in_hand;
+        if (h.kitchen_only) {
+            std::vector<SolidVertex> kitchen;
+            add_patch(kitchen, {0.0f, 0.0f}, {L / 4, W}, 0.0005f, {0.85f, 0.92f, 1.0f});
+            m.draw_solid(kitchen, false, 0.07f, view_proj, eye);
+            std::vector<SolidVertex> head_string;
+            add_ribbon(head_string, {{L / 4, 0.0f}, {L / 4, W}}, 0.0015f, 0.0006f, {0.9f, 0.95f, 1.0f});
+            m.draw_solid(head_string, false, 0.5f, view_proj, eye);
+        }
+        std::vector<SolidVertex> ring;
+        add_ring(ring, h.pos, m.radius * 1.3f, 0.003f, 0.0007f, h.legal ? glm::vec3(0.95f) : red);
+        m.draw_solid(ring, false, 0.85f, view_proj, eye);
+    }
+
+    // 3c. The ball-return tray along the south side: a dark wooden trough against the apron.
+    if (!frame.tray.empty()) {
+        std::vector<SolidVertex> tray;
+        const float out = m.dims.cushion_width + m.dims.rail_width;
+        const float len = tray_length(m.radius), x0 = L / 2 - len / 2, x1 = L / 2 + len / 2;
+        const float wall = m.dims.tray_wall, floor_z = m.dims.tray_floor, top = floor_z + 1.3f * m.radius;
+        const float y_in = -out, y_out = -out - m.dims.tray_width - 2 * wall;
+        const glm::vec3 wood{0.22f, 0.08f, 0.04f}, lining{0.05f, 0.05f, 0.05f};
+        add_box(tray, {x0, y_out, floor_z - wall}, {x1, y_in, floor_z}, lining);         // floor
+        add_box(tray, {x0, y_out, floor_z - wall}, {x1, y_out + wall, top}, wood);       // outer wall
+        add_box(tray, {x0, y_in - wall, floor_z - wall}, {x1, y_in, top - 0.5f * m.radius}, wood);  // inner wall
+        add_box(tray, {x0 - wall, y_out, floor_z - wall}, {x0, y_in, top}, wood);        // ends
+        add_box(tray, {x1, y_out, floor_z - wall}, {x1 + wall, y_in, top}, wood);
+        m.draw_solid(tray, true, 1.0f, view_proj, eye);
     }
 
     // 4. The balls: one ray-cast impostor each.
@@ -481,8 +548,27 @@ void Renderer::draw(const FrameView& frame, int width, int height) {
     glBindTexture(GL_TEXTURE_2D, m.number_tex);
     glActiveTexture(GL_TEXTURE0);
     glUniform1i(glGetUniformLocation(m.ball_prog, "u_numbers"), 2);
+    const GLint u_tint = glGetUniformLocation(m.ball_prog, "u_tint");
+    const GLint u_alpha = glGetUniformLocation(m.ball_prog, "u_alpha");
+    glUniform4f(u_tint, 0.0f, 0.0f, 0.0f, 0.0f);
+    glUniform1f(u_alpha, 1.0f);
+    // The tray's balls after the table's, numbers up and upright as seen from the overhead camera.
+    std::vector<BallView> balls(frame.balls.begin(), frame.balls.end());
+    const glm::quat numbers_up = glm::angleAxis(-1.5707963f, glm::vec3(0, 0, 1)) * glm::angleAxis(-1.5707963f, glm::vec3(0, 1, 0));
+    for (std::size_t k = 0; k < frame.tray.size() && k < 15; ++k)
+        balls.push_back({frame.tray[k], tray_slot(m.table, m.radius, static_cast<int>(k)), numbers_up});
+    if (frame.ball_in_hand) balls.push_back({0, {frame.ball_in_hand->pos, m.radius}, glm::quat(1, 0, 0, 0)});
     glBindVertexArray(m.quad_vao);
-    for (const BallView& b : frame.balls) {
+    for (std::size_t i = 0; i < balls.size(); ++i) {
+        const BallView& b = balls[i];
+        if (frame.ball_in_hand && i + 1 == balls.size()) {
+            // The ball in hand: see-through, red when it may not go there.
+            glEnable(GL_BLEND);
+            glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            glDepthMask(GL_FALSE);
+            glUniform1f(u_alpha, 0.6f);
+            if (!frame.ball_in_hand->legal) glUniform4f(u_tint, red.x, red.y, red.z, 0.55f);
+        }
         const glm::mat3 rot = glm::mat3_cast(b.orientation);
         const glm::vec3 colour = ball_colour(b.id);
         glUniform3fv(u_centre, 1, glm::value_ptr(b.centre));
@@ -493,6 +579,8 @@ void Renderer::draw(const FrameView& frame, int width, int height) {
         glUniform1i(u_number, b.id >= 1 && b.id <= 15 ? b.id : 0);
         glDrawArrays(GL_TRIANGLES, 0, 6);
     }
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
 
     // 5. The cue stick: tip, ferrule, maple shaft, dark butt.
     if (frame.cue) {
@@ -508,13 +596,7 @@ void Renderer::draw(const FrameView& frame, int width, int height) {
         add_lathe(cue, at(0.010f), at(0.035f), 0.0064f, 0.0065f, {0.92f, 0.90f, 0.84f}, {0.92f, 0.90f, 0.84f}, 20);
         add_lathe(cue, at(0.035f), at(0.75f), 0.0065f, 0.0105f, {0.86f, 0.74f, 0.52f}, {0.80f, 0.66f, 0.44f}, 20);
         add_lathe(cue, at(0.75f), at(len), 0.0105f, 0.0145f, {0.20f, 0.07f, 0.04f}, {0.08f, 0.03f, 0.02f}, 20);
-        m.set_common(m.solid_prog, view_proj, eye);
-        glUniform1i(glGetUniformLocation(m.solid_prog, "u_lit"), 1);
-        glUniform1f(glGetUniformLocation(m.solid_prog, "u_alpha"), 1.0f);
-        glBindVertexArray(m.solid_vao);
-        glBindBuffer(GL_ARRAY_BUFFER, m.solid_vbo);
-        glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(cue.size() * sizeof(SolidVertex)), cue.data(), GL_STREAM_DRAW);
-        glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(cue.size()));
+        m.draw_solid(cue, true, 1.0f, view_proj, eye);
     }
     glBindVertexArray(0);
 }

@@ -43,12 +43,24 @@ struct AimView {
     std::vector<glm::vec2> cue_after;    ///< the cue ball's direction after contact
 };
 
+/// Ball-in-hand: the cue ball shown where the player would place it.
+struct BallInHandView {
+    glm::vec2 pos{0.0f};        ///< where the cue ball would go (unit: m), table frame
+    bool legal = true;          ///< false: drawn tinted red (overlaps a ball, off the cloth, ...)
+    bool kitchen_only = false;  ///< true: the area behind the head string (x < L/4) is shaded
+};
+
 /// Everything one frame shows. Spans must stay valid during draw().
 struct FrameView {
     std::span<const BallView> balls;   ///< pocketed balls simply left out
     Camera camera;
     std::optional<CueView> cue;
     const AimView* aim = nullptr;
+    /// The cue ball in hand: a semi-transparent ball and a ring at `pos`, red when not legal.
+    std::optional<BallInHandView> ball_in_hand;
+    /// Ids of the pocketed object balls, in the order they dropped: drawn in the ball-return
+    /// tray along the table's south side (outside the rails), numbers up.
+    std::span<const int> tray;
 };
 
 /// Quality switches (defaults: everything on).

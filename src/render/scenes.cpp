@@ -1,5 +1,6 @@
 #include "render/scenes.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -95,6 +96,17 @@ DemoScene cue_view_scene(float aspect) {
     s.aim.ghost = ghost;
     s.aim.object_path = {apex, apex + 0.4f * d};
     s.show_aim = true;
+    return s;
+}
+
+DemoScene ball_in_hand_scene(float aspect) {
+    DemoScene s = mid_game_scene(aspect, 3.0);
+    s.tray = {3, 9, 14, 6, 11};
+    std::erase_if(s.balls, [&](const BallView& b) {
+        return b.id == 0 || std::find(s.tray.begin(), s.tray.end(), b.id) != s.tray.end();
+    });
+    const float L = static_cast<float>(s.table.length()), W = static_cast<float>(s.table.width());
+    s.ball_in_hand = BallInHandView{{0.14f * L, 0.58f * W}, false, true};
     return s;
 }
 

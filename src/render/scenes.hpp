@@ -19,8 +19,10 @@ struct DemoScene {
     std::optional<CueView> cue;
     AimView aim;
     bool show_aim = false;
+    std::optional<BallInHandView> ball_in_hand;
+    std::vector<int> tray;
 
-    FrameView frame() const { return {balls, camera, cue, show_aim ? &aim : nullptr}; }
+    FrameView frame() const { return {balls, camera, cue, show_aim ? &aim : nullptr, ball_in_hand, tray}; }
 };
 
 /// 9 ft table, 8-ball rack with seed 7, cue ball on the head spot, overhead camera.
@@ -32,5 +34,9 @@ DemoScene mid_game_scene(float aspect, double t = 0.35);
 DemoScene mid_roll_scene(float aspect, double t = 0.6);
 /// The racked table seen from behind the cue ball, with the cue stick and the aim guide.
 DemoScene cue_view_scene(float aspect);
+/// After a scratch: the break's balls at rest-ish (t = 3 s), five object balls in the
+/// ball-return tray, the cue ball in hand behind the head string (kitchen shaded) on an
+/// illegal spot (red). Overhead camera.
+DemoScene ball_in_hand_scene(float aspect);
 
 }  // namespace render

@@ -341,6 +341,8 @@ uniform vec3 u_colour;        // sRGB
 uniform int u_stripe;         // 1: a stripe ball (colour band on white)
 uniform int u_cue;            // 1: the cue ball
 uniform int u_number;         // 1-15: the number in the white circles
+uniform vec4 u_tint;          // rgb: mixed into the colour by a (ball in hand, illegal: red)
+uniform float u_alpha;        // < 1: drawn see-through (ball in hand)
 uniform sampler2D u_numbers;  // the numbers' atlas, 4 x 4 cells (render::make_number_atlas)
 uniform vec3 u_cloth_colour;  // sRGB, for the reflection of the table
 
@@ -403,7 +405,7 @@ void main() {
 
     vec4 clip = u_view_proj * vec4(p, 1.0);
     gl_FragDepth = 0.5 * (clip.z / clip.w) + 0.5;
-    o_colour = vec4(tone_map(col), 1.0);
+    o_colour = vec4(mix(tone_map(col), u_tint.rgb, u_tint.a), u_alpha);
 }
 )";
 

@@ -150,6 +150,16 @@ TableDims table_dims(const physics::Table& table) {
     return d;
 }
 
+float tray_length(double ball_radius) { return 15.0f * (2.0f * static_cast<float>(ball_radius) + 0.002f) + 0.01f; }
+
+glm::vec3 tray_slot(const physics::Table& table, double ball_radius, int k) {
+    const TableDims d = table_dims(table);
+    const float R = static_cast<float>(ball_radius);
+    const float x0 = static_cast<float>(table.length()) / 2 - tray_length(ball_radius) / 2 + 0.005f + R + 0.001f;
+    const float y = -(d.cushion_width + d.rail_width) - d.tray_wall - d.tray_width / 2;
+    return {x0 + static_cast<float>(k) * (2 * R + 0.002f), y, d.tray_floor + R};
+}
+
 std::vector<PocketHole> pocket_holes(const physics::Table& table) {
     std::vector<PocketHole> holes;
     for (const auto& p : table.pockets) {

@@ -19,7 +19,17 @@ struct TableDims {
     float rail_width = 0.140f;       ///< wooden rail top, beyond the cushion (unit: m)
     float rail_height = 0.044f;      ///< rail top above the cloth (unit: m)
     float apron_depth = 0.30f;       ///< how far the table's wooden sides reach below the cloth (unit: m)
+    /// The ball-return tray along the south side, against the apron (y < 0): inner width, floor
+    /// height (below the cloth), wall thickness (unit: m).
+    float tray_width = 0.064f;
+    float tray_floor = -0.045f;
+    float tray_wall = 0.008f;
 };
+
+/// The tray's length along x (unit: m): room for 15 balls in a row, centred on the table.
+float tray_length(double ball_radius);
+/// Centre of the k-th ball (k from 0) in the tray (unit: m).
+glm::vec3 tray_slot(const physics::Table& table, double ball_radius, int k);
 TableDims table_dims(const physics::Table& table);
 
 /// A pocket hole as drawn: a disc whose near edge lies on the physics drop line.

@@ -10,6 +10,7 @@
 
 #include "physics/rack.hpp"
 #include "physics/simulate.hpp"
+#include "render/camera.hpp"
 #include "render/orientation.hpp"
 #include "render/renderer.hpp"
 #include "render/table_mesh.hpp"
@@ -144,6 +145,72 @@ TEST(NumberAtlas, MissingFontIsAClearError) {
     } catch (const std::runtime_error& e) {
         EXPECT_NE(std::string(e.what()).find("/nonexistent/NoSuchFont.ttf"), std::string::npos);
         EXPECT_NE(std::string(e.what()).find("fonts-dejavu-core"), std::string::npos);
+    }
+}
+
+TEST(Cameras, OrbitLooksAtTheTargetFromTheDistance) {
+    const glm::vec3 target{1.2f, 0.6f, 0.03f};
+    const render::Camera c = render::orbit_camera(target, 0.7f, 0.5f, 1.5f);
+    EXPECT_NEAR(glm::length(c.eye - target), 1.5f, 1e-5f);
+    const glm::vec3 f = glm::normalize(c.target - c.eye);
+    EXPECT_NEAR(f.x, std::cos(0.5f) * std::cos(0.7f), 1e-5f);
+    EXPECT_NEAR(f.y, std::cos(0.5f) * std::sin(0.7f), 1e-5f);
+    EXPECT_NEAR(f.z, -std::sin(0.5f), 1e-5f);
+    EXPECT_NEAR(glm::dot(f, c.up), 0.0f, 1e-5f);
+    EXPECT_GT(c.up.z, 0.0f);
+    // Straight down: up still defined, along the heading.
+    const render::Camera down = render::orbit_camera(target, 0.7f, 1.5707963f, 2.0f);
+    EXPECT_NEAR(down.up.x, std::cos(0.7f), 1e-4f);
+    EXPECT_NEAR(down.eye.z, target.z + 2.0f, 1e-4f);
+}
+
+TEST(Cameras, LerpRunsFromOneCameraToTheOther) {
+    const physics::Table table = physics::build_table(*physics::table_preset("9ft"));
+    const render::Camera a = render::overhead_camera(table, 16.0f / 9.0f);
+    const render::Camera b = render::cue_ball_camera({0.6f, 0.6f}, 0.2f);
+    for (float t : {0.0f, 1.0f}) {
+        const render::Camera c = render::lerp(a, b, t);
+        const render::Camera& e = t == 0.0f ? a : b;
+        EXPECT_NEAR(glm::length(c.eye - e.eye), 0.0f, 1e-4f) << t;
+        EXPECT_NEAR(glm::length(c.target - e.target), 0.0f, 1e-4f) << t;
+        EXPECT_NEAR(c.fovy_deg, e.fovy_deg, 1e-4f) << t;
+        EXPECT_NEAR(c.near_m, e.near_m, 1e-5f) << t;
+    }
+    // In between: continuous (small steps move the eye a little), up square to the view.
+    render::Camera prev = a;
+    for (int i = 1; i <= 100; ++i) {
+        const render::Camera c = render::lerp(a, b, static_cast<float>(i) / 100.0f);
+        EXPECT_LT(glm::length(c.eye - prev.eye), 0.2f) << i;
+        EXPECT_NEAR(glm::dot(glm::normalize(c.target - c.eye), c.up), 0.0f, 1e-4f) << i;
+        EXPECT_NEAR(glm::length(c.up), 1.0f, 1e-4f) << i;
+        prev = c;
+    }
+    // Clamped outside [0, 1].
+    EXPECT_NEAR(glm::length(render::lerp(a, b, 2.0f).eye - b.eye), 0.0f, 1e-4f);
+}
+
+TEST(Cameras, OverheadShowsTheWholeTableAndTheTray) {
+    const physics::Table table = physics::build_table(*physics::table_preset("9ft"));
+    const double R = physics::Params{}.ball_radius;
+    for (float aspect : {16.0f / 9.0f, 4.0f / 3.0f, 2.0f}) {
+        const render::Camera c = render::overhead_camera(table, aspect);
+        const glm::mat4 vp = c.projection(aspect) * c.view();
+        const render::TableDims d = render::table_dims(table);
+        const float out = d.cushion_width + d.rail_width, L = static_cast<float>(table.length()),
+                    W = static_cast<float>(table.width());
+        std::vector<glm::vec3> corners = {{-out, -out, d.rail_height}, {L + out, W + out, d.rail_height}};
+        for (int k : {0, 14}) {
+            const glm::vec3 p = render::tray_slot(table, R, k);
+            corners.push_back(p + glm::vec3(0, -static_cast<float>(R), static_cast<float>(R)));
+        }
+        for (const glm::vec3& p : corners) {
+            const glm::vec4 clip = vp * glm::vec4(p, 1.0f);
+            EXPECT_LE(std::abs(clip.x / clip.w), 1.0f) << aspect;
+            EXPECT_LE(std::abs(clip.y / clip.w), 1.0f) << aspect;
+        }
+        // The tray lies outside the south rail, its balls in a row along x.
+        EXPECT_LT(render::tray_slot(table, R, 0).y, -out);
+        EXPECT_NEAR(render::tray_slot(table, R, 1).x - render::tray_slot(table, R, 0).x, 2 * R + 0.002, 1e-5);
     }
 }
 
