@@ -9,6 +9,7 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <backends/imgui_impl_sdl.h>
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 #include <tuple>
@@ -25,6 +26,7 @@
 #include "app/panel.hpp"
 #include "app/picking.hpp"
 #include "app/scene_frame.hpp"
+#include "app/seats.hpp"
 #include "app/status_report.hpp"
 #include "audio/engine.hpp"
 #include "game/json_field.hpp"
@@ -34,12 +36,6 @@
 namespace app {
 
 namespace {
-
-#ifdef COOLAABER_HAVE_AI
-constexpr bool ai_built = true;
-#else
-constexpr bool ai_built = false;
-#endif
 
 CameraMode camera_mode(ViewMode v) { return v == ViewMode::overhead ? CameraMode::overhead : CameraMode::cue_ball; }
 
@@ -83,7 +79,7 @@ struct Table {
 
     void set_power(double power) {
         controller.set_power(power);
-        setup.settings.power = controller.aim().power;
+        setup.settings.power = std::clamp(power, 0.0, 1.0);
     }
 
     void change_view() {
@@ -199,6 +195,7 @@ int run_window(const AppOptions& options) {
         TableInput input(t.controller, t.rig, to_table);
         double mouse_x = 0, mouse_y = 0;
         bool mouse_down[3] = {false, false, false};
+        bool mouse_pressed[3] = {false, false, false};  // a press this frame, even if released again
         int sound_serial = t.controller.shot_serial();
         int warm_frames = 2;
         auto last = std::chrono::steady_clock::now();
@@ -231,6 +228,7 @@ int run_window(const AppOptions& options) {
                         const bool down = e.type == SDL_MOUSEBUTTONDOWN;
                         const int slot = e.button.button == SDL_BUTTON_LEFT ? 0 : e.button.button == SDL_BUTTON_RIGHT ? 1 : 2;
                         mouse_down[slot] = down;
+                        if (down) mouse_pressed[slot] = true;
                         const MouseButton b = slot == 0 ? MouseButton::left : slot == 1 ? MouseButton::right : MouseButton::middle;
                         if (down && !ui && !over_panel(mouse_x)) input.press(b, mouse_x, mouse_y);
                         if (!down) input.release(b, mouse_x, mouse_y);
@@ -309,10 +307,13 @@ int run_window(const AppOptions& options) {
             // feed the position and buttons from the events instead.
             ImGuiIO& io = ImGui::GetIO();
             io.MousePos = ImVec2(static_cast<float>(mouse_x), static_cast<float>(mouse_y));
-            for (int i = 0; i < 3; ++i) io.MouseDown[i] = mouse_down[i];
+            for (int i = 0; i < 3; ++i) {
+                io.MouseDown[i] = mouse_down[i] || mouse_pressed[i];
+                mouse_pressed[i] = false;
+            }
             ImGui::NewFrame();
             const PanelActions actions = draw_panel(t.controller, t.setup.settings, t.panel, static_cast<float>(w),
-                                                    static_cast<float>(h), ai_built);
+                                                    static_cast<float>(h), ai_available());
             ImGui::Render();
             t.apply(actions);
             const float aspect = static_cast<float>(painter.view_width()) / static_cast<float>(painter.height());
@@ -322,7 +323,7 @@ int run_window(const AppOptions& options) {
             painter.draw(scene, t.last_camera, ImGui::GetDrawData());
             painter.present();
             SDL_GL_SwapWindow(window);
-            if (status) status->write(status_json(t.controller, t.setup.settings, t.rig.mode()));
+            if (status) status->write(status_json(t.controller, t.setup.settings, t.rig.mode(), t.panel.widgets));
         }
         t.save_and_close();
         ImGui_ImplOpenGL3_Shutdown();
@@ -358,7 +359,7 @@ int run_screenshot(const AppOptions& options) {
         for (int frame = 0; frame < 2; ++frame) {  // ImGui lays its windows out on the first frame
             ImGui_ImplOpenGL3_NewFrame();
             ImGui::NewFrame();
-            (void)draw_panel(t.controller, t.setup.settings, t.panel, static_cast<float>(w), static_cast<float>(h), ai_built);
+            (void)draw_panel(t.controller, t.setup.settings, t.panel, static_cast<float>(w), static_cast<float>(h), ai_available());
             ImGui::Render();
         }
         const float aspect = static_cast<float>(painter.view_width()) / static_cast<float>(painter.height());

@@ -42,7 +42,7 @@ bool calls_count(const game::Session& s) {
 
 Controller::Controller(game::Session session, ControllerOptions options)
     : session_(std::move(session)), options_(std::move(options)), noise_rng_(derive(options_.seed, 7)) {
-    for (std::size_t i = 0; i < 2; ++i) computers_[i] = make_computer(options_.players[i], derive(options_.seed, i));
+    for (std::size_t i = 0; i < 2; ++i) computers_[i] = make_computer(options_.players[i], derive(options_.seed, i), options_.noise);
     begin_turn();
 }
 
@@ -52,7 +52,7 @@ void Controller::replace(game::Session session, ControllerOptions options) {
     stop_thinking();
     session_ = std::move(session);
     options_ = std::move(options);
-    for (std::size_t i = 0; i < 2; ++i) computers_[i] = make_computer(options_.players[i], derive(options_.seed, i));
+    for (std::size_t i = 0; i < 2; ++i) computers_[i] = make_computer(options_.players[i], derive(options_.seed, i), options_.noise);
     noise_rng_ = physics::SplitMix64(derive(options_.seed, 7));
     playback_.clear();
     orientations_.reset();
@@ -118,6 +118,7 @@ void Controller::begin_turn() {
         return;
     }
     if (session_.phase() == game::Phase::place_cue_ball) prepare_human_ball_in_hand();
+    aim_ = human_aim_;
     aim_at_target();
     refresh_preview();
 }
@@ -198,6 +199,7 @@ void Controller::play(const physics::Stroke& stroke) {
     preview_.reset();
     computer_decision_.reset();
     playback_.start(*session_.last_shot());
+    orientations_.begin_shot();
     at_strike_ = orientations_;
     ++shot_serial_;
     settled_ = false;
@@ -221,9 +223,8 @@ void Controller::finish_shot() {
 
 void Controller::update(double dt) {
     if (playback_.moving()) {
-        const double t0 = playback_.time();
         playback_.advance(options_.playback_speed > 0.0 ? dt * options_.playback_speed : playback_.end());
-        orientations_.follow(playback_.shot(), t0, playback_.time());
+        orientations_.follow(playback_.shot(), playback_.time(), playback_.end());
         if (!playback_.moving() && !settled_) finish_shot();
         return;
     }
@@ -243,7 +244,7 @@ void Controller::update(double dt) {
         computer_aim_left_ -= dt;
         if (computer_aim_left_ <= 0.0 || options_.playback_speed <= 0.0) {
             const rules::Player p = *session_.to_act();
-            const double scale = options_.noise * own_noise_factor(seat_kind(p));
+            const double scale = options_.noise * computers_[rules::index(p)]->execution_noise();
             play(game::with_noise(computer_decision_->stroke, scale, noise_rng_));
         }
     }
@@ -253,6 +254,10 @@ void Controller::launch_computer() {
     game::Player* player = computers_[rules::index(*session_.to_act())].get();
     const game::Session* s = &session_;
     thinking_ = std::async(std::launch::async, [player, s] { return player->decide(*s); });
+}
+
+void Controller::wait_for_computer() const {
+    if (thinking_.valid()) thinking_.wait();
 }
 
 void Controller::stop_thinking() {
@@ -294,20 +299,22 @@ void Controller::set_heading(double deg) {
 }
 
 void Controller::set_power(double power) {
-    aim_.power = std::clamp(power, 0.0, 1.0);
-    if (human_to_act()) refresh_preview();
+    human_aim_.power = std::clamp(power, 0.0, 1.0);
+    if (!human_to_act()) return;
+    aim_.power = human_aim_.power;
+    refresh_preview();
 }
 
 void Controller::set_spin(double side, double top) {
     if (!human_to_act()) return;
-    aim_.side = side;
-    aim_.top = top;
+    aim_.side = human_aim_.side = side;
+    aim_.top = human_aim_.top = top;
     refresh_preview();
 }
 
 void Controller::set_elevation(double deg) {
     if (!human_to_act()) return;
-    aim_.elevation_deg = std::clamp(deg, 0.0, 60.0);
+    aim_.elevation_deg = human_aim_.elevation_deg = std::clamp(deg, 0.0, 60.0);
     refresh_preview();
 }
 
@@ -398,9 +405,8 @@ void Controller::choose(rules::ChoiceOption option) {
 
 void Controller::skip() {
     if (!playback_.moving()) return;
-    const double t0 = playback_.time();
     playback_.skip_to_end();
-    orientations_.follow(playback_.shot(), t0, playback_.time());
+    orientations_.follow(playback_.shot(), playback_.time(), playback_.end());
     if (!settled_) finish_shot();
 }
 

@@ -68,6 +68,9 @@ class Controller {
     /// The human at the keyboard may act now (aim, strike, place, call, choose).
     bool human_to_act() const;
     bool computer_thinking() const { return thinking_.valid(); }
+    /// Blocks until a computer player thinking now has decided (headless use and tests; the
+    /// decision is taken in by the next update()).
+    void wait_for_computer() const;
     /// The stroke being prepared (the human's, or the computer's while it shows its aim).
     const Aim& aim() const { return aim_; }
     /// The aim guide and proposed call for the current aim; empty while the balls move.
@@ -130,6 +133,7 @@ class Controller {
     BallOrientations orientations_;
     BallOrientations at_strike_;  ///< the orientations when the shot on show was struck (replays)
     Aim aim_;
+    Aim human_aim_;  ///< the humans' power, spin and elevation, kept while a computer aims
     std::optional<AimPreview> preview_;
     std::optional<rules::Call> manual_call_;
     std::future<game::Decision> thinking_;

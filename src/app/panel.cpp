@@ -15,7 +15,17 @@ namespace {
 const ImVec4 accent{0.95f, 0.80f, 0.35f, 1.0f};
 const ImVec4 warning{1.0f, 0.45f, 0.40f, 1.0f};
 
-bool full_button(const char* label) { return ImGui::Button(label, ImVec2(-1.0f, 0.0f)); }
+// Remembers where the last widget was drawn, under `label`.
+void remember(PanelState& st, const std::string& label) {
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    st.widgets[label] = {a.x, a.y, b.x, b.y};
+}
+
+bool full_button(PanelState& st, const char* label) {
+    const bool pressed = ImGui::Button(label, ImVec2(-1.0f, 0.0f));
+    remember(st, label);
+    return pressed;
+}
 
 // The cue ball seen from the shooter, with a dot where the tip will hit; click or drag on it
 // to move the dot. Returns the new (side, top) when changed.
@@ -105,7 +115,9 @@ void new_game_dialog(PanelState& st, PanelActions& out, bool ai_available) {
         ImGui::Checkbox("Rail after contact required", &o.rail_after_contact);
     }
     ImGui::Separator();
-    if (ImGui::Button("Start", ImVec2(120, 0))) {
+    const bool start = ImGui::Button("Start", ImVec2(120, 0));
+    remember(st, "Start");
+    if (start) {
         out.new_game = d;
         ImGui::CloseCurrentPopup();
     }
@@ -119,6 +131,7 @@ void new_game_dialog(PanelState& st, PanelActions& out, bool ai_available) {
 PanelActions draw_panel(const Controller& c, const Settings& settings, PanelState& st, float width, float height,
                         bool ai_available) {
     PanelActions out;
+    st.widgets.clear();
     const game::Session& s = c.session();
     ImGui::SetNextWindowPos(ImVec2(width - panel_width, 0));
     ImGui::SetNextWindowSize(ImVec2(panel_width, height));
@@ -144,12 +157,13 @@ PanelActions draw_panel(const Controller& c, const Settings& settings, PanelStat
     if (ImGui::SliderFloat("##power", &power, 0.0f, 100.0f, "%.0f %%")) out.power = power / 100.0;
     bool sound = settings.sound;
     if (ImGui::Checkbox("Sound", &sound)) out.sound = sound;
-    if (full_button("Change View")) out.change_view = true;
-    if (full_button("Restart")) {
+    remember(st, "Sound");
+    if (full_button(st, "Change View")) out.change_view = true;
+    if (full_button(st, "Restart")) {
         if (s.history().empty() || s.phase() == game::Phase::game_over) out.restart = true;
         else st.confirm_restart = true;
     }
-    if (full_button("Exit")) out.exit = true;
+    if (full_button(st, "Exit")) out.exit = true;
 
     // ---- The information bar
     ImGui::Separator();
@@ -166,7 +180,7 @@ PanelActions draw_panel(const Controller& c, const Settings& settings, PanelStat
     const bool mine = c.human_to_act();
     if (std::optional<rules::Choice> choice = s.choice(); choice && mine)
         for (rules::ChoiceOption o : choice->options)
-            if (full_button(choice_words(o).c_str())) out.choice = o;
+            if (full_button(st, choice_words(o).c_str())) out.choice = o;
 
     // ---- The stroke
     ImGui::Separator();
@@ -195,22 +209,27 @@ PanelActions draw_panel(const Controller& c, const Settings& settings, PanelStat
     }
     bool guide = settings.aim_guide;
     if (ImGui::Checkbox("Aim guide", &guide)) out.aim_guide = guide;
-    if (mine && s.phase() == game::Phase::shoot && full_button("Strike")) out.strike = true;
+    if (mine && s.phase() == game::Phase::shoot && full_button(st, "Strike")) out.strike = true;
     if (c.moving()) {
-        if (full_button("Skip")) out.skip = true;
+        if (full_button(st, "Skip")) out.skip = true;
     } else if (c.playback().has_shot() && !c.busy()) {
-        if (full_button("Replay")) out.replay = true;
+        if (full_button(st, "Replay")) out.replay = true;
     }
     ImGui::Separator();
-    if (full_button("New Game...")) {
+    if (full_button(st, "New Game...")) {
         st.draft = NewGame{settings.game, settings.names, settings.players, settings.house_rules};
         st.new_game_open = true;
     }
-    ImGui::TextDisabled("Right-drag: aim, release: strike");
-    ImGui::TextDisabled("Left-drag: aim (or move ball in hand)");
-    ImGui::TextDisabled("Click ball, pocket: call. Wheel: zoom");
-    ImGui::TextDisabled("Arrows: fine aim (Shift finer), Space");
-    ImGui::TextDisabled("strike, V view, S skip, R restart");
+    if (ImGui::CollapsingHeader("Controls")) {
+        ImGui::TextDisabled("Right-drag: aim, release: strike");
+        ImGui::TextDisabled("Left-drag: aim (or move ball in hand)");
+        ImGui::TextDisabled("Shift while dragging: fine aim");
+        ImGui::TextDisabled("Click a ball, then a pocket: call");
+        ImGui::TextDisabled("Arrows: aim (Shift finer), power");
+        ImGui::TextDisabled("Space strike, S skip, P replay");
+        ImGui::TextDisabled("V view, O free view, wheel zoom");
+        ImGui::TextDisabled("R restart, Esc menu, F11 fullscreen");
+    }
 
     new_game_dialog(st, out, ai_available);
     if (st.confirm_restart) {
@@ -219,7 +238,9 @@ PanelActions draw_panel(const Controller& c, const Settings& settings, PanelStat
     }
     if (ImGui::BeginPopupModal("Restart?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
         ImGui::Text("Abandon this game and rack again?");
-        if (ImGui::Button("Yes, restart", ImVec2(130, 0))) {
+        const bool yes = ImGui::Button("Yes, restart", ImVec2(130, 0));
+        remember(st, "Yes, restart");
+        if (yes) {
             out.restart = true;
             ImGui::CloseCurrentPopup();
         }

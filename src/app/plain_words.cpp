@@ -69,7 +69,8 @@ std::string shot_words(const game::Session& session, const game::ShotRecord& r) 
     std::string out;
     if (r.push_out()) out = who + " pushed out. ";
     if (!down.empty()) out += fmt::format("{} pocketed {}. ", who, ball_list(down));
-    else if (!r.verdict.foul && r.before.shot != rules::Shot::break_shot) out += fmt::format("{} pocketed nothing. ", who);
+    else if (r.before.shot == rules::Shot::break_shot) out += fmt::format("{} broke: nothing dropped. ", who);
+    else if (!r.verdict.foul) out += fmt::format("{} pocketed nothing. ", who);
     if (r.verdict.break_result == rules::BreakResult::illegal) out += "Illegal break. ";
     if (r.verdict.foul) {
         std::string list;

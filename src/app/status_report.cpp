@@ -31,7 +31,8 @@ const char* view_name(CameraMode m) {
 
 }  // namespace
 
-std::string status_json(const Controller& c, const Settings& s, CameraMode view) {
+std::string status_json(const Controller& c, const Settings& s, CameraMode view,
+                        const std::map<std::string, std::array<float, 4>>& widgets) {
     const game::Session& session = c.session();
     nlohmann::ordered_json j;
     j["phase"] = phase_name(session.phase());
@@ -53,6 +54,7 @@ std::string status_json(const Controller& c, const Settings& s, CameraMode view)
     j["cue_ball"] = cue != session.state().positions.end() ? nlohmann::ordered_json::array({cue->second.x, cue->second.y})
                                                            : nlohmann::ordered_json(nullptr);
     j["balls_on_table"] = session.state().on_table.size();
+    j["widgets"] = widgets;
     return j.dump() + "\n";
 }
 

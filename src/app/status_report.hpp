@@ -2,7 +2,9 @@
 // so end-to-end tests can wait for "the balls stopped" or read the information bar.
 #pragma once
 
+#include <array>
 #include <filesystem>
+#include <map>
 #include <string>
 
 #include "app/camera_rig.hpp"
@@ -13,7 +15,9 @@ namespace app {
 
 /// {"phase", "to_act", "moving", "busy", "view", "sound", "power", "shots", "game_number",
 ///  "info": [lines], "last_shot", "refusal", "winner", "heading_deg", "cue_ball", "balls_on_table"}
-std::string status_json(const Controller& c, const Settings& s, CameraMode view);
+/// `widgets`: where the panel's labelled widgets are (PanelState::widgets), as "widgets".
+std::string status_json(const Controller& c, const Settings& s, CameraMode view,
+                        const std::map<std::string, std::array<float, 4>>& widgets);
 
 /// Writes `text` to `path` atomically when it differs from the last text written.
 class StatusFile {
