@@ -319,7 +319,7 @@ int run_window(const AppOptions& options) {
             const float aspect = static_cast<float>(painter.view_width()) / static_cast<float>(painter.height());
             t.last_camera = t.camera(aspect);
             sound.set_listener(listener_of(t.last_camera));
-            const SceneFrame scene = build_scene(t.controller, t.setup.settings.aim_guide);
+            const SceneFrame scene = build_scene(t.controller, t.setup.settings.aim_guide, input.dragged_to());
             painter.draw(scene, t.last_camera, ImGui::GetDrawData());
             painter.present();
             SDL_GL_SwapWindow(window);

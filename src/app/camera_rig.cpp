@@ -9,19 +9,6 @@ namespace {
 constexpr float transition_seconds = 0.7f;
 }
 
-render::Camera blend(const render::Camera& a, const render::Camera& b, float t) {
-    const float s = std::clamp(t, 0.0f, 1.0f);
-    render::Camera c = b;
-    c.eye = glm::mix(a.eye, b.eye, s);
-    c.target = glm::mix(a.target, b.target, s);
-    const glm::vec3 up = glm::mix(a.up, b.up, s);
-    c.up = glm::length(up) > 1e-4f ? glm::normalize(up) : b.up;
-    c.fovy_deg = a.fovy_deg + (b.fovy_deg - a.fovy_deg) * s;
-    c.near_m = std::min(a.near_m, b.near_m);
-    c.far_m = std::max(a.far_m, b.far_m);
-    return c;
-}
-
 void CameraRig::begin_blend(const render::Camera& from) {
     from_ = from;
     blend_ = 0.0f;
@@ -54,7 +41,7 @@ void CameraRig::zoom(float steps) {
 void CameraRig::orbit(float dx, float dy) {
     if (mode_ != CameraMode::free) return;
     yaw_ -= dx * 0.005f;
-    pitch_ = std::clamp(pitch_ + dy * 0.005f, 0.08f, 1.55f);
+    pitch_ = std::clamp(pitch_ + dy * 0.005f, 0.08f, 1.5f);
 }
 
 void CameraRig::update(double dt) {
@@ -71,15 +58,8 @@ render::Camera CameraRig::target_camera(const physics::Table& table, float aspec
         case CameraMode::cue_ball:
             return render::cue_ball_camera(cue_, heading_, cue_distance_, 0.12f + 0.21f * cue_distance_);
         case CameraMode::free: {
-            render::Camera c;
-            c.target = {static_cast<float>(table.length()) / 2, static_cast<float>(table.width()) / 2, 0.0f};
-            c.eye = c.target + orbit_distance_ * glm::vec3(std::cos(pitch_) * std::cos(yaw_),
-                                                           std::cos(pitch_) * std::sin(yaw_), std::sin(pitch_));
-            c.up = {0, 0, 1};
-            c.fovy_deg = 45.0f;
-            c.near_m = 0.05f;
-            c.far_m = 20.0f;
-            return c;
+            const glm::vec3 centre{static_cast<float>(table.length()) / 2, static_cast<float>(table.width()) / 2, 0.0f};
+            return render::orbit_camera(centre, yaw_, pitch_, orbit_distance_);
         }
     }
     return {};
@@ -89,7 +69,7 @@ render::Camera CameraRig::camera(const physics::Table& table, float aspect) cons
     const render::Camera to = target_camera(table, aspect);
     if (blend_ >= 1.0f) return to;
     const float s = blend_ * blend_ * (3.0f - 2.0f * blend_);  // ease in and out
-    return blend(from_, to, s);
+    return render::lerp(from_, to, s);
 }
 
 }  // namespace app

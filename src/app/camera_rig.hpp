@@ -43,12 +43,9 @@ class CameraRig {
     float heading_ = 0.0f;
     float overhead_zoom_ = 1.0f;   ///< 1: the whole table; larger: closer
     float cue_distance_ = 0.75f;   ///< (unit: m)
-    float yaw_ = -1.2f, pitch_ = 0.75f, orbit_distance_ = 2.6f;
+    float yaw_ = 0.9f, pitch_ = 0.75f, orbit_distance_ = 2.6f;  ///< free view (unit: rad, m)
     render::Camera from_;
     float blend_ = 1.0f;  ///< 0 → 1 over a transition
 };
-
-/// Blends two cameras (eye, target, up, field of view, clip planes) with weight t in [0, 1].
-render::Camera blend(const render::Camera& a, const render::Camera& b, float t);
 
 }  // namespace app

@@ -23,7 +23,10 @@ void TableInput::press(MouseButton b, double x, double y) {
                 const std::optional<physics::Vec2> p = to_table_(x, y);
                 const double R = c_.session().config().params.ball_radius;
                 if (p && cue != c_.session().state().positions.end() && physics::norm(*p - cue->second) < 2.0 * R)
+                {
                     drag_ = Drag::cue_ball;
+                    dragged_to_ = p;
+                }
             }
             break;
         }
@@ -43,7 +46,8 @@ void TableInput::motion(double x, double y, bool shift) {
             c_.turn_aim(-dx * (shift ? sensitivity.fine : sensitivity.normal));
             break;
         case Drag::cue_ball:
-            if (const std::optional<physics::Vec2> p = to_table_(x, y)) c_.move_cue_ball(*p);
+            dragged_to_ = to_table_(x, y);
+            if (dragged_to_) c_.move_cue_ball(*dragged_to_);
             break;
         case Drag::orbit: rig_.orbit(static_cast<float>(dx), static_cast<float>(dy)); break;
     }

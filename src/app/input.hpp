@@ -38,6 +38,8 @@ class TableInput {
     bool dragging() const { return drag_ != Drag::none; }
     /// The cue ball in hand is being moved, and where it would go (for the legal/illegal look).
     bool moving_cue_ball() const { return drag_ == Drag::cue_ball; }
+    /// While the cue ball in hand is dragged: the point under the mouse, legal or not.
+    std::optional<physics::Vec2> dragged_to() const { return drag_ == Drag::cue_ball ? dragged_to_ : std::nullopt; }
 
     AimSensitivity sensitivity;
 
@@ -49,6 +51,7 @@ class TableInput {
     Drag drag_ = Drag::none;
     double start_x_ = 0, start_y_ = 0, last_x_ = 0, last_y_ = 0;
     bool moved_ = false;
+    std::optional<physics::Vec2> dragged_to_;
 };
 
 }  // namespace app

@@ -11,10 +11,12 @@ render::FrameView SceneFrame::view(const render::Camera& camera) const {
     v.camera = camera;
     v.cue = cue;
     v.aim = show_aim ? &aim : nullptr;
+    v.tray = tray;
+    v.ball_in_hand = ball_in_hand;
     return v;
 }
 
-SceneFrame build_scene(const Controller& c, bool aim_guide) {
+SceneFrame build_scene(const Controller& c, bool aim_guide, std::optional<physics::Vec2> dragged_to) {
     SceneFrame f;
     const double R = c.session().config().params.ball_radius;
     for (const physics::BallState& b : c.balls_now())
@@ -33,6 +35,16 @@ SceneFrame build_scene(const Controller& c, bool aim_guide) {
         f.cue = k;
         f.aim = preview->view;
         f.show_aim = aim_guide;
+    }
+    const rules::BallInHand in_hand = c.session().ball_in_hand();
+    if (c.human_to_act() && in_hand != rules::BallInHand::none && cue != c.session().state().positions.end()) {
+        render::BallInHandView h;
+        const bool refused = dragged_to && c.check_cue_ball(*dragged_to).has_value();
+        const physics::Vec2 at = refused ? *dragged_to : cue->second;
+        h.pos = {static_cast<float>(at.x), static_cast<float>(at.y)};
+        h.legal = !refused;
+        h.kitchen_only = in_hand == rules::BallInHand::kitchen;
+        f.ball_in_hand = h;
     }
     return f;
 }

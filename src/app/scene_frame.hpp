@@ -17,11 +17,15 @@ struct SceneFrame {
     render::AimView aim;
     bool show_aim = false;
     std::vector<int> tray;  ///< pocketed object balls, in order
+    std::optional<render::BallInHandView> ball_in_hand;
 
     /// The view for the renderer; valid while this SceneFrame lives unchanged.
     render::FrameView view(const render::Camera& camera) const;
 };
 
-SceneFrame build_scene(const Controller& controller, bool aim_guide);
+/// `dragged_to`: where the player is dragging the cue ball in hand (shown red when it may
+/// not go there), else empty.
+SceneFrame build_scene(const Controller& controller, bool aim_guide,
+                       std::optional<physics::Vec2> dragged_to = std::nullopt);
 
 }  // namespace app

@@ -66,13 +66,13 @@ TEST(Input, DraggingTheCueBallInHandMovesIt) {
     EXPECT_TRUE(f.c.session().history().empty());
 }
 
-TEST(Picking, TheCentreOfTheOverheadViewIsTheCentreOfTheTable) {
+TEST(Picking, TheCentreOfTheViewIsWhereTheCameraLooks) {
     const physics::Table table = physics::build_table(*physics::table_preset("9ft"));
     const render::Camera cam = render::overhead_camera(table, 4.0f / 3.0f);
     const auto p = app::table_point(cam, 800, 600, 400, 300, 0.0);
     ASSERT_TRUE(p.has_value());
-    EXPECT_NEAR(p->x, table.length() / 2, 1e-4);
-    EXPECT_NEAR(p->y, table.width() / 2, 1e-4);
+    EXPECT_NEAR(p->x, cam.target.x, 1e-4);
+    EXPECT_NEAR(p->y, cam.target.y, 1e-4);
     const auto right = app::table_point(cam, 800, 600, 700, 300, 0.0);
     ASSERT_TRUE(right.has_value());
     EXPECT_GT(right->x, p->x);  // x is to the right
