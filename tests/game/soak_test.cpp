@@ -75,7 +75,9 @@ void soak(rules::Game type) {
             [&](const Session& now) {
                 if (now.phase() == Phase::choose) expect_round_trip(now, g);
             });
-        ASSERT_TRUE(report.winner || report.capped) << "game " << g;
+        // Every game ends (the issue): with a winner, never at the shot cap.
+        ASSERT_TRUE(report.winner) << "game " << g << " did not end: capped after " << report.shots
+                                   << " shots";
         EXPECT_EQ(report.winner.has_value(), s.phase() == Phase::game_over);
         EXPECT_LE(report.shots, PlayLimits{}.max_shots);
         expect_consistent(s);
@@ -96,7 +98,7 @@ void soak(rules::Game type) {
         std::string(rules::name(type)).c_str(), games_per_type, shots, placements, choices,
         push_outs, stalemates, capped, 1e3 * seconds[seconds.size() / 2],
         1e3 * seconds[seconds.size() * 95 / 100], 1e3 * seconds.back(), total);
-    EXPECT_LE(capped, games_per_type / 100) << "too many games reach the shot cap";
+    EXPECT_EQ(capped, 0);
 }
 
 TEST(Soak, EightBall) {
