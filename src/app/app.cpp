@@ -198,6 +198,7 @@ int run_window(const AppOptions& options) {
         bool mouse_pressed[3] = {false, false, false};  // a press this frame, even if released again
         int sound_serial = t.controller.shot_serial();
         int warm_frames = 2;
+        long frames = 0;
         auto last = std::chrono::steady_clock::now();
         auto over_panel = [&](double x) { return x >= painter.view_width(); };
 
@@ -323,7 +324,7 @@ int run_window(const AppOptions& options) {
             painter.draw(scene, t.last_camera, ImGui::GetDrawData());
             painter.present();
             SDL_GL_SwapWindow(window);
-            if (status) status->write(status_json(t.controller, t.setup.settings, t.rig.mode(), t.panel.widgets));
+            if (status) status->write(status_json(t.controller, t.setup.settings, t.rig.mode(), t.panel.widgets, ++frames));
         }
         t.save_and_close();
         ImGui_ImplOpenGL3_Shutdown();

@@ -32,7 +32,7 @@ const char* view_name(CameraMode m) {
 }  // namespace
 
 std::string status_json(const Controller& c, const Settings& s, CameraMode view,
-                        const std::map<std::string, std::array<float, 4>>& widgets) {
+                        const std::map<std::string, std::array<float, 4>>& widgets, long frames) {
     const game::Session& session = c.session();
     nlohmann::ordered_json j;
     j["phase"] = phase_name(session.phase());
@@ -55,6 +55,7 @@ std::string status_json(const Controller& c, const Settings& s, CameraMode view,
                                                            : nlohmann::ordered_json(nullptr);
     j["balls_on_table"] = session.state().on_table.size();
     j["widgets"] = widgets;
+    j["frames"] = frames;
     return j.dump() + "\n";
 }
 

@@ -15,9 +15,10 @@ namespace app {
 
 /// {"phase", "to_act", "moving", "busy", "view", "sound", "power", "shots", "game_number",
 ///  "info": [lines], "last_shot", "refusal", "winner", "heading_deg", "cue_ball", "balls_on_table"}
-/// `widgets`: where the panel's labelled widgets are (PanelState::widgets), as "widgets".
+/// `widgets`: where the panel's labelled widgets are (PanelState::widgets), as "widgets";
+/// `frames`: frames drawn so far (for measuring the frame rate).
 std::string status_json(const Controller& c, const Settings& s, CameraMode view,
-                        const std::map<std::string, std::array<float, 4>>& widgets);
+                        const std::map<std::string, std::array<float, 4>>& widgets, long frames);
 
 /// Writes `text` to `path` atomically when it differs from the last text written.
 class StatusFile {
