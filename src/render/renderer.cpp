@@ -167,7 +167,7 @@ struct Renderer::Impl {
     GLuint solid_vao = 0, solid_vbo = 0;
     // The table's programs, one per material (cloth, cushion, wood), and the cloth's bake.
     std::array<GLuint, 5> table_progs{};  // by TableMaterial; [3] bakes
-    GLuint ball_prog = 0, shadow_prog = 0, solid_prog = 0;
+    GLuint ball_prog = 0, shadow_prog = 0, cue_shadow_prog = 0, solid_prog = 0;
     GLuint cloth_tex = 0, wood_tex = 0, number_tex = 0;
     // The cloth's view-independent light, baked once over the cloth's footprint.
     GLuint cloth_light_tex = 0;
@@ -415,6 +415,7 @@ Renderer::Renderer(const physics::Table& table, double ball_radius, RenderSettin
             build_program(glsl::kTableVert, table_fragment_source(static_cast<TableMaterial>(i)));
     m.ball_prog = build_program(glsl::kBallVert, glsl::kBallFrag);
     m.shadow_prog = build_program(glsl::kShadowVert, glsl::kShadowFrag);
+    m.cue_shadow_prog = build_program(glsl::kCueShadowVert, glsl::kCueShadowFrag);
     m.solid_prog = build_program(glsl::kSolidVert, glsl::kSolidFrag);
     m.cloth_tex = upload_texture(make_cloth_texture());
     m.wood_tex = upload_texture(make_wood_texture(), true);
@@ -442,7 +443,7 @@ Renderer::~Renderer() {
     glDeleteBuffers(1, &m.solid_vbo);
     glDeleteVertexArrays(1, &m.solid_vao);
     for (GLuint p : m.table_progs) glDeleteProgram(p);
-    for (GLuint p : {m.ball_prog, m.shadow_prog, m.solid_prog}) glDeleteProgram(p);
+    for (GLuint p : {m.ball_prog, m.shadow_prog, m.cue_shadow_prog, m.solid_prog}) glDeleteProgram(p);
     glDeleteTextures(1, &m.cloth_light_tex);
     glDeleteTextures(1, &m.cloth_tex);
     glDeleteTextures(1, &m.wood_tex);
@@ -472,6 +473,19 @@ void Renderer::draw(const FrameView& frame, int width, int height) {
     // 1. The table: from the cache when it can be, else drawn.
     if (!(m.settings.cache_table && m.use_cache(frame, width, height, view_proj))) m.draw_table(view_proj, eye);
 
+    // The cue stick's axis: tip and butt centres, radii.
+    struct CueAxis {
+        glm::vec3 dir, tip;
+    };
+    std::optional<CueAxis> cue_axis;
+    const float cue_length = 1.47f;
+    if (frame.cue) {
+        const CueView& c = *frame.cue;
+        const glm::vec3 dir{std::cos(c.heading) * std::cos(c.elevation), std::sin(c.heading) * std::cos(c.elevation),
+                            -std::sin(c.elevation)};
+        cue_axis = CueAxis{dir, glm::vec3(c.cue_ball, m.radius) - (m.radius + c.pull_back) * dir};
+    }
+
     // 2. Soft shadows and contact occlusion, multiplied onto the cloth.
     if (m.settings.shadows) {
         m.set_common(m.shadow_prog, view_proj, eye);
@@ -483,6 +497,20 @@ void Renderer::draw(const FrameView& frame, int width, int height) {
         glBindVertexArray(m.quad_vao);
         for (const BallView& b : frame.balls) {
             glUniform3fv(centre, 1, glm::value_ptr(b.centre));
+            glDrawArrays(GL_TRIANGLES, 0, 6);
+        }
+        if (cue_axis) {
+            // The cue's shadow: over the cue's footprint, widened by how far the lamps throw
+            // the shadow of its highest point.
+            const glm::vec3 a = cue_axis->tip, b = cue_axis->tip - cue_length * cue_axis->dir;
+            const float reach = 0.05f + 1.6f * std::max(a.z, b.z);
+            const glm::vec4 rect{std::min(a.x, b.x) - reach, std::min(a.y, b.y) - reach, std::max(a.x, b.x) + reach,
+                                 std::max(a.y, b.y) + reach};
+            m.set_common(m.cue_shadow_prog, view_proj, eye);
+            glUniform4fv(glGetUniformLocation(m.cue_shadow_prog, "u_rect"), 1, glm::value_ptr(rect));
+            glUniform3fv(glGetUniformLocation(m.cue_shadow_prog, "u_cue_a"), 1, glm::value_ptr(a));
+            glUniform3fv(glGetUniformLocation(m.cue_shadow_prog, "u_cue_b"), 1, glm::value_ptr(b));
+            glUniform2f(glGetUniformLocation(m.cue_shadow_prog, "u_cue_r"), 0.0063f, 0.0145f);
             glDrawArrays(GL_TRIANGLES, 0, 6);
         }
         glDepthMask(GL_TRUE);
@@ -584,13 +612,9 @@ void Renderer::draw(const FrameView& frame, int width, int height) {
 
     // 5. The cue stick: tip, ferrule, maple shaft, dark butt.
     if (frame.cue) {
-        const CueView& c = *frame.cue;
-        const glm::vec3 dir{std::cos(c.heading) * std::cos(c.elevation), std::sin(c.heading) * std::cos(c.elevation),
-                            -std::sin(c.elevation)};
-        const glm::vec3 ball{c.cue_ball, m.radius};
-        const glm::vec3 tip = ball - (m.radius + c.pull_back) * dir;
+        const glm::vec3 dir = cue_axis->dir, tip = cue_axis->tip;
         std::vector<SolidVertex> cue;
-        const float len = 1.47f;
+        const float len = cue_length;
         auto at = [&](float s) { return tip - s * dir; };
         add_lathe(cue, at(0.0f), at(0.010f), 0.0062f, 0.0064f, {0.18f, 0.30f, 0.62f}, {0.18f, 0.30f, 0.62f}, 20);
         add_lathe(cue, at(0.010f), at(0.035f), 0.0064f, 0.0065f, {0.92f, 0.90f, 0.84f}, {0.92f, 0.90f, 0.84f}, 20);

@@ -99,6 +99,26 @@ DemoScene cue_view_scene(float aspect) {
     return s;
 }
 
+DemoScene aim_overhead_scene(float aspect) {
+    DemoScene s = racked_scene(aspect);
+    // The cue ball off the long axis, aimed at the apex ball: the cue crosses the lamps' line.
+    BallView& cue = s.balls.front();
+    const float L = static_cast<float>(s.table.length()), W = static_cast<float>(s.table.width());
+    cue.centre = {0.3f * L, 0.22f * W, cue.centre.z};
+    const glm::vec2 c{cue.centre.x, cue.centre.y};
+    const physics::Vec2 foot = s.table.foot_spot();
+    const glm::vec2 apex{static_cast<float>(foot.x), static_cast<float>(foot.y)};
+    const glm::vec2 d = glm::normalize(apex - c);
+    s.cue = CueView{c, std::atan2(d.y, d.x), 0.10f, 0.10f};
+    const float R = static_cast<float>(s.ball_radius);
+    const glm::vec2 ghost = apex - 2.0f * R * d;
+    s.aim.cue_path = {c, ghost};
+    s.aim.ghost = ghost;
+    s.aim.object_path = {apex, apex + 0.4f * d};
+    s.show_aim = true;
+    return s;
+}
+
 DemoScene ball_in_hand_scene(float aspect) {
     DemoScene s = mid_game_scene(aspect, 3.0);
     s.tray = {3, 9, 14, 6, 11};

@@ -34,6 +34,9 @@ DemoScene mid_game_scene(float aspect, double t = 0.35);
 DemoScene mid_roll_scene(float aspect, double t = 0.6);
 /// The racked table seen from behind the cue ball, with the cue stick and the aim guide.
 DemoScene cue_view_scene(float aspect);
+/// The same aim as cue_view_scene (cue stick and aim guide) seen from the overhead camera,
+/// so the cue's shadow on the cloth shows.
+DemoScene aim_overhead_scene(float aspect);
 /// After a scratch: the break's balls at rest-ish (t = 3 s), five object balls in the
 /// ball-return tray, the cue ball in hand behind the head string (kitchen shaded) on an
 /// illegal spot (red). Overhead camera.

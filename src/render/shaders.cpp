@@ -456,6 +456,53 @@ void main() {
 }
 )";
 
+// The cue stick's soft shadow on the cloth: for each lamp, the closest approach of the ray
+// from the cloth point to the lamp and the cue's axis gives the cue's angular offset and
+// half-width as seen from that point; the part of the lamp's disc the cue's strip covers
+// (taken across the strip) is that lamp's shadow, weighted by its share of the light.
+const char* const kCueShadowVert = R"(
+layout(location = 0) in vec2 a_corner;
+uniform mat4 u_view_proj;
+uniform vec4 u_rect;   // the shadow's footprint on the cloth: xy min, xy max (unit: m)
+out vec3 v_world;
+void main() {
+    v_world = vec3(mix(u_rect.xy, u_rect.zw, a_corner * 0.5 + 0.5), 0.0004);
+    gl_Position = u_view_proj * vec4(v_world, 1.0);
+}
+)";
+
+const char* const kCueShadowFrag = R"(
+in vec3 v_world;
+layout(location = 0) out vec4 o_colour;
+uniform vec3 u_cue_a;   // the cue's axis from the tip ...
+uniform vec3 u_cue_b;   // ... to the butt (unit: m)
+uniform vec2 u_cue_r;   // its radius at the tip and at the butt (unit: m)
+void main() {
+    vec3 p = vec3(v_world.xy, 0.0);
+    vec3 u = u_cue_b - u_cue_a;
+    vec3 r = p - u_cue_a;
+    float uu = dot(u, u), ur = dot(u, r);
+    float lit = 0.0, shadowed = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        vec3 d = u_lamps[i].xyz - p;
+        float dl = length(d);
+        vec3 l = d / dl;
+        float w = smoothstep(0.25, 0.6, l.z) * l.z / (dl * dl);
+        float ul = dot(u, l), lr = dot(l, r);
+        float s = clamp((ur - lr * ul) / max(uu - ul * ul, 1e-9), 0.0, 1.0);
+        float t = max(s * ul - lr, 1e-4);
+        float dist = length(r + t * l - s * u);
+        float half_w = mix(u_cue_r.x, u_cue_r.y, s) / t, theta = dist / t;
+        float al = u_lamps[i].w / dl;
+        float cover = clamp((min(theta + half_w, al) - max(theta - half_w, -al)) / (2.0 * al), 0.0, 1.0);
+        lit += w;
+        shadowed += w * cover;
+    }
+    float ambient = 0.035;
+    o_colour = vec4(vec3((lit - shadowed + ambient) / (lit + ambient)), 1.0);
+}
+)";
+
 const char* const kSolidVert = R"(
 layout(location = 0) in vec3 a_pos;
 layout(location = 1) in vec3 a_normal;

@@ -76,6 +76,8 @@ TEST_F(GoldenTest, MidGameOverhead) { check("mid_game", draw(render::mid_game_sc
 
 TEST_F(GoldenTest, CueBallViewWithAimGuide) { check("cue_view", draw(render::cue_view_scene(kAspect))); }
 
+TEST_F(GoldenTest, AimOverheadWithCueShadow) { check("aim_overhead", draw(render::aim_overhead_scene(kAspect))); }
+
 TEST_F(GoldenTest, BallInHandAndTray) { check("ball_in_hand", draw(render::ball_in_hand_scene(kAspect))); }
 
 TEST_F(GoldenTest, RendersAreRepeatable) {
