@@ -98,6 +98,7 @@ struct Table {
         if (a.skip) controller.skip();
         if (a.replay) controller.replay();
         if (a.strike) controller.strike();
+        if (a.hint) controller.hint();
         if (a.spin) controller.set_spin(a.spin->first, a.spin->second);
         if (a.elevation_deg) controller.set_elevation(*a.elevation_deg);
         if (a.choice) controller.choose(*a.choice);
@@ -251,6 +252,7 @@ int run_window(const AppOptions& options) {
                             case SDLK_s:
                             case SDLK_RETURN: t.controller.skip(); break;
                             case SDLK_p: t.controller.replay(); break;
+                            case SDLK_h: t.controller.hint(); break;
                             case SDLK_g: t.setup.settings.aim_guide = !t.setup.settings.aim_guide; break;
                             case SDLK_o: t.rig.set_mode(t.rig.mode() == CameraMode::free ? CameraMode::overhead : CameraMode::free, t.last_camera); break;
                             case SDLK_r: t.panel.confirm_restart = true; break;

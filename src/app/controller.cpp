@@ -237,7 +237,8 @@ void Controller::update(double dt) {
             refusal_ = std::string("the computer player failed: ") + e.what();
             return;
         }
-        apply_computer(d);
+        if (hinting_) apply_hint(d);
+        else apply_computer(d);
         return;
     }
     if (computer_decision_) {
@@ -248,6 +249,30 @@ void Controller::update(double dt) {
             play(game::with_noise(computer_decision_->stroke, scale, noise_rng_));
         }
     }
+}
+
+void Controller::hint() {
+    if (!human_to_act() || session_.phase() != game::Phase::shoot || !ai_available()) return;
+    hint_player_ = make_computer("ai:5", derive(options_.seed, 100 + static_cast<std::uint64_t>(hints_++)), options_.noise);
+    game::Player* player = hint_player_.get();
+    const game::Session* s = &session_;
+    hinting_ = true;
+    thinking_ = std::async(std::launch::async, [player, s] { return player->decide(*s); });
+}
+
+void Controller::apply_hint(const game::Decision& d) {
+    hinting_ = false;
+    if (d.cue_pos && session_.ball_in_hand() != rules::BallInHand::none) {
+        try {
+            session_.place_cue_ball(*d.cue_pos);
+        } catch (const game::Refused&) {
+            // keep the cue ball where the player put it
+        }
+    }
+    const double power = std::clamp((d.stroke.speed - min_cue_speed) / (max_cue_speed - min_cue_speed), 0.0, 1.0);
+    aim_ = human_aim_ = Aim{d.stroke.heading_deg, power, d.stroke.side, d.stroke.top, d.stroke.elevation_deg};
+    if (d.call.is_ball() || d.call.is_safety()) manual_call_ = d.call;
+    refresh_preview();
 }
 
 void Controller::launch_computer() {
@@ -263,6 +288,7 @@ void Controller::wait_for_computer() const {
 void Controller::stop_thinking() {
     if (thinking_.valid()) thinking_.wait();
     thinking_ = {};
+    hinting_ = false;
     computer_decision_.reset();
 }
 

@@ -105,6 +105,9 @@ class Controller {
     void set_push_out(bool declare);
     void strike();
     void choose(rules::ChoiceOption option);
+    /// Asks the strongest AI what it would play here: its stroke, call and cue-ball placement
+    /// become the human's aim (nothing is struck). No-op in a build without the AI.
+    void hint();
 
     // ---- Anyone
     void skip();     ///< the shot being played back jumps to its end
@@ -121,6 +124,7 @@ class Controller {
     void prepare_human_ball_in_hand();
     void launch_computer();
     void apply_computer(const game::Decision& d);
+    void apply_hint(const game::Decision& d);
     void stop_thinking();
     physics::Vec2 default_cue_spot() const;
     void aim_at_target();
@@ -138,6 +142,9 @@ class Controller {
     std::optional<rules::Call> manual_call_;
     std::future<game::Decision> thinking_;
     std::optional<game::Decision> computer_decision_;  ///< decided, shown before the strike
+    std::unique_ptr<game::Player> hint_player_;        ///< the AI asked for a hint
+    bool hinting_ = false;                             ///< thinking_ is a hint for the human
+    int hints_ = 0;
     double computer_aim_left_ = 0.0;
     bool settled_ = true;   ///< the last shot's playback has reached its end and been taken in
     int dry_shots_ = 0;     ///< computer-only games: shots with no ball down (stalemate rule)

@@ -209,7 +209,10 @@ PanelActions draw_panel(const Controller& c, const Settings& settings, PanelStat
     }
     bool guide = settings.aim_guide;
     if (ImGui::Checkbox("Aim guide", &guide)) out.aim_guide = guide;
-    if (mine && s.phase() == game::Phase::shoot && full_button(st, "Strike")) out.strike = true;
+    if (mine && s.phase() == game::Phase::shoot) {
+        if (full_button(st, "Strike")) out.strike = true;
+        if (ai_available && full_button(st, "Hint")) out.hint = true;
+    }
     if (c.moving()) {
         if (full_button(st, "Skip")) out.skip = true;
     } else if (c.playback().has_shot() && !c.busy()) {

@@ -33,6 +33,7 @@ struct PanelActions {
     bool skip = false;
     bool replay = false;
     bool strike = false;
+    bool hint = false;
     std::optional<std::pair<double, double>> spin;  ///< side, top (unit: R)
     std::optional<double> elevation_deg;
     std::optional<rules::ChoiceOption> choice;

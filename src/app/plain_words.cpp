@@ -75,7 +75,7 @@ std::string shot_words(const game::Session& session, const game::ShotRecord& r) 
     if (r.verdict.foul) {
         std::string list;
         for (rules::Foul f : r.verdict.fouls) list += (list.empty() ? "" : "; ") + foul_words(f);
-        out += fmt::format("Foul: {}. ", list);
+        out += fmt::format("Foul by {}: {}. ", who, list);
     }
     if (!r.verdict.respot.empty()) out += fmt::format("Spotted: {}. ", ball_list(r.verdict.respot));
     if (r.verdict.game_over && r.verdict.winner) out += fmt::format("{} wins the game.", session.name(*r.verdict.winner));

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "app/aim_preview.hpp"
+#include "app/seats.hpp"
 #include "app_support.hpp"
 #include "physics/table.hpp"
 
@@ -197,6 +198,28 @@ TEST(Controller, NothingHappensWhenItIsNotTheHumansTurn) {
     EXPECT_TRUE(c.session().history().empty());
     run_until_idle(c);
     EXPECT_EQ(c.session().history().size(), 1u);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(Controller, AHintSetsTheAimOfTheStrongestAiWithoutStriking) {
+    if (!app::ai_available()) GTEST_SKIP() << "built without the AI";
+    app::Controller c(new_session(), options());
+    c.set_power(0.9);
+    c.strike();
+    run_until_idle(c);
+    ASSERT_TRUE(c.human_to_act());
+    const std::size_t shots = c.session().history().size();
+    c.hint();
+    EXPECT_TRUE(c.computer_thinking());
+    EXPECT_FALSE(c.human_to_act());
+    run_until_idle(c);
+    EXPECT_TRUE(c.human_to_act());
+    EXPECT_EQ(c.session().history().size(), shots);  // nothing was struck
+    ASSERT_NE(c.preview(), nullptr);
+    EXPECT_TRUE(c.call_is_manual());  // 8-ball after the break: the AI calls a ball or a safety
 }
 
 }  // namespace
