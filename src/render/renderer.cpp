@@ -136,6 +136,14 @@ void add_ring(std::vector<SolidVertex>& out, glm::vec2 centre, float radius, flo
     add_ribbon(out, circle, half_width, z, colour);
 }
 
+/// The shaders' tone_map (ACES fit, then the display curve), for constants set as uniforms.
+glm::vec3 tone_map(glm::vec3 c, float exposure) {
+    c *= exposure;
+    c = glm::clamp((c * (2.51f * c + 0.03f)) / (c * (2.43f * c + 0.59f) + 0.14f), 0.0f, 1.0f);
+    const glm::vec3 s = glm::sqrt(c);
+    return s * (1.2f - 0.2f * s);
+}
+
 }  // namespace
 
 glm::vec3 ball_colour(int id) {
@@ -172,6 +180,7 @@ struct Renderer::Impl {
     // The cloth's view-independent light, baked once over the cloth's footprint.
     GLuint cloth_light_tex = 0;
     glm::vec4 bake_rect{0.0f};
+    float baked_exposure = 0.0f;  // the cloth's baked colour is tone-mapped: re-baked when exposure changes
     std::array<glm::vec4, 3> lamps;
     // The static table's cache (colour and depth), valid for `cache_key`.
     GLuint cache_fbo = 0, cache_colour = 0, cache_depth = 0;
@@ -220,6 +229,8 @@ void Renderer::Impl::set_table_uniforms(GLuint prog, const glm::mat4& view_proj,
     const physics::Vec2 foot = table.foot_spot();
     glUniform2f(glGetUniformLocation(prog, "u_foot_spot"), static_cast<float>(foot.x), static_cast<float>(foot.y));
     glUniform1f(glGetUniformLocation(prog, "u_rail_height"), dims.rail_height);
+    const glm::vec3 liner = tone_map(glm::vec3(0.012f, 0.010f, 0.009f), settings.exposure);
+    glUniform3fv(glGetUniformLocation(prog, "u_liner_shown"), 1, glm::value_ptr(liner));
 }
 
 void Renderer::Impl::bake_cloth_light() {
@@ -233,6 +244,8 @@ void Renderer::Impl::bake_cloth_light() {
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous_fbo);
     GLint previous_viewport[4] = {0, 0, 0, 0};
     glGetIntegerv(GL_VIEWPORT, previous_viewport);
+    if (cloth_light_tex) glDeleteTextures(1, &cloth_light_tex);
+    baked_exposure = settings.exposure;
     glGenTextures(1, &cloth_light_tex);
     glBindTexture(GL_TEXTURE_2D, cloth_light_tex);
     // RGBA8, not a float format: llvmpipe filters 8-bit textures on a much faster path.
@@ -459,6 +472,7 @@ void Renderer::draw(const FrameView& frame, int width, int height) {
     const glm::mat4 view_proj = frame.camera.projection(aspect) * frame.camera.view();
     const glm::vec3 eye = frame.camera.eye;
 
+    if (m.settings.exposure != m.baked_exposure) m.bake_cloth_light();
     glViewport(0, 0, width, height);
     const glm::vec3 bg = glm::pow(kBackground, glm::vec3(1.0f / 2.2f));
     glClearColor(bg.x, bg.y, bg.z, 1.0f);

@@ -146,7 +146,8 @@ in vec2 v_uv;
 layout(location = 0) out vec4 o_colour;
 uniform sampler2D u_cloth_tex;
 uniform sampler2D u_wood_tex;
-uniform sampler2D u_cloth_light; // baked by material 3: sqrt of the linear colour at mean nap, nap weight in a
+uniform sampler2D u_cloth_light; // baked by material 3 (see there)
+uniform vec3 u_liner_shown;      // the pockets' leather liner, tone-mapped
 uniform vec4 u_bake_rect;        // the baked texture's footprint: xy min corner, zw size (unit: m)
 uniform vec3 u_holes[6];       // xy centre, z radius (unit: m), as a 3 x 2 grid (hole_distance)
 uniform vec4 u_table;          // length, width, cushion width, rail width (unit: m)
@@ -228,19 +229,28 @@ void main() {
     vec3 c;
     if (kMaterial == 0) {
         // The cloth: baked light times this pixel's nap.
+        // The cloth: the baked, already tone-mapped colour, modulated by this pixel's nap by
+        // the baked amount (the cloth is at z = 0: no fog).
         float nap = texture(u_cloth_tex, v_uv * 12.0).r;
         vec4 baked = texture(u_cloth_light, (v_pos.xy - u_bake_rect.xy) / u_bake_rect.zw);
-        c = baked.rgb * baked.rgb * (1.0 + baked.a * (0.56 * nap - 0.28));
+        vec3 shown = baked.rgb * (1.0 + baked.a * (2.0 * nap - 1.0));
         // Under the rail tops the texture holds the rail's light; what shows of the cloth
         // there (through the holes, past their edge) is the pocket's black leather liner.
         float ox = max(-v_pos.x, v_pos.x - u_table.x), oy = max(-v_pos.y, v_pos.y - u_table.y);
         float under_rail = step(u_table.z - 0.0005, max(ox, oy)) * step(0.1, baked.a);
-        c = mix(c, vec3(0.012, 0.010, 0.009), under_rail);
-        o_colour = vec4(tone_map(c), 1.0);  // the cloth is at z = 0: no fog
+        o_colour = vec4(mix(shown, u_liner_shown, under_rail), 1.0);
         return;
     }
     vec3 n = normalize(v_normal);
     if (dot(n, u_eye - v_pos) < 0.0) n = -n;
+    if (kMaterial == 2) {
+        // The bevels and the table's sides (the rail tops are material 4): no pocket reaches
+        // them, so no hole test (and no discard, which would cost llvmpipe its early depth test).
+        vec3 albedo = texture(u_wood_tex, vec2(v_uv.x / 1.3, v_uv.y / 0.16)).rgb;  // an sRGB texture: linear when sampled
+        c = lamps_light_cheap(v_pos, n, albedo, 6, 0.25) + albedo * 0.06;
+        o_colour = vec4(tone_map(apply_fog(c, v_pos)), 1.0);
+        return;
+    }
     float hole_r = 0.0;
     float hd = hole_distance(v_pos.xy, hole_r);
     if (kMaterial == 3) {
@@ -282,7 +292,11 @@ void main() {
             o_colour = vec4(sqrt(lit), mix(1.0, 0.2, lip));
             return;
         }
-        o_colour = vec4(sqrt(sum), weight);  // stored as RGBA8: square-root coding keeps the dark tones
+        // The cloth's texels hold what is shown (tone-mapped) at the mean nap, and in a how
+        // much the nap's factor, 0.72 to 1.28, changes that (relative, either way).
+        vec3 shown = tone_map(sum);
+        float swing = (tone_map(sum * 1.28).g - tone_map(sum * 0.72).g) / (2.0 * max(shown.g, 1e-4));
+        o_colour = vec4(shown, clamp(weight * swing, 0.0, 1.0));
         return;
     }
     if (kMaterial == 4) {
@@ -293,18 +307,13 @@ void main() {
         o_colour = vec4(tone_map(c), 1.0);  // above the cloth: no fog
         return;
     }
+    // The cushions: cloth-covered rubber, cut away at the pockets. Their sheen (a highlight of
+    // weight 0.015) is too faint to pay for: diffuse only.
     if (hd < 0.0) discard;
-    if (kMaterial == 1) {
-        vec3 albedo = u_cloth_linear * 0.92;
-        float nap = texture(u_cloth_tex, v_uv * 12.0).r;
-        albedo *= 0.8 + 0.4 * nap;
-        c = lamps_light_cheap(v_pos, n, albedo, 3, 0.015) + albedo * 0.035;
-    } else {
-        vec3 albedo = texture(u_wood_tex, vec2(v_uv.x / 1.3, v_uv.y / 0.16)).rgb;  // an sRGB texture: linear when sampled
-        // The bevels and the table's sides (the rail tops are material 4).
-        float spec = 0.25;
-        c = lamps_light_cheap(v_pos, n, albedo, 6, spec) + albedo * 0.06;
-    }
+    vec3 albedo = u_cloth_linear * 0.92;
+    float nap = texture(u_cloth_tex, v_uv * 12.0).r;
+    albedo *= 0.8 + 0.4 * nap;
+    c = lamps_diffuse(v_pos, n, albedo) + albedo * 0.035;
     o_colour = vec4(tone_map(apply_fog(c, v_pos)), 1.0);
 }
 )";

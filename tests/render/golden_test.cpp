@@ -87,6 +87,29 @@ TEST_F(GoldenTest, RendersAreRepeatable) {
     EXPECT_EQ(d.max_channel_diff, 0);
 }
 
+TEST_F(GoldenTest, ExposureChangeReachesTheBakedCloth) {
+    // The cloth's light is baked tone-mapped: a new exposure must re-bake it, and going back
+    // must give the same frame again.
+    const render::DemoScene scene = render::racked_scene(kAspect);
+    render::Renderer renderer(scene.table, scene.ball_radius);
+    render::OffscreenTarget target(kWidth, kHeight, 4);
+    auto frame = [&]() {
+        target.bind();
+        renderer.draw(scene.frame(), kWidth, kHeight);
+        target.resolve();
+        return render::read_pixels(kWidth, kHeight);
+    };
+    const render::Image normal = frame();
+    renderer.settings().exposure = 1.6f;
+    const render::Image bright = frame();
+    renderer.settings().exposure = 1.0f;
+    const render::Image again = frame();
+    // The middle of the cloth, green channel.
+    const std::size_t centre = (static_cast<std::size_t>(kHeight / 2) * kWidth + kWidth / 3) * 4 + 1;
+    EXPECT_GT(bright.rgba[centre], normal.rgba[centre] + 10);
+    EXPECT_EQ(render::compare(normal, again, 0).max_channel_diff, 0);
+}
+
 TEST_F(GoldenTest, CachedTableMatchesDrawnTable) {
     const render::DemoScene scene = render::mid_game_scene(kAspect);
     const render::ImageDiff d = render::compare(draw(scene, true), draw(scene, false), 0);
