@@ -260,6 +260,11 @@ struct BadCase {
     std::string path;
 };
 
+// gtest prints a parameter with this (the case's name, not its bytes).
+std::ostream& operator<<(std::ostream& os, const BadCase& c) {
+    return os << c.name;
+}
+
 std::vector<BadCase> bad_cases() {
     std::vector<BadCase> cases;
     auto add = [&](std::string name, json base, auto edit, std::string path) {
