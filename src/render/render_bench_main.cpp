@@ -2,7 +2,7 @@
 // fog on) offscreen and prints one JSON line: frame-time median and 95th percentile, fps.
 //   coolaaber-render-bench [--size 1280x720] [--frames 300] [--samples 4] [--scene mid_game]
 //                          [--png out.png]   (scenes: mid_game, racked, mid_roll, cue_view,
-//                          ball_in_hand, aim_overhead)
+//                          ball_in_hand, aim_overhead, cushion)
 #include <epoxy/gl.h>
 
 #include <algorithm>
@@ -58,8 +58,9 @@ int main(int argc, char** argv) {
             else if (scene_name == "cue_view") scenes.push_back(render::cue_view_scene(aspect));
             else if (scene_name == "ball_in_hand") scenes.push_back(render::ball_in_hand_scene(aspect));
             else if (scene_name == "aim_overhead") scenes.push_back(render::aim_overhead_scene(aspect));
+            else if (scene_name == "cushion") scenes.push_back(render::cushion_scene(aspect));
             else {
-                std::fprintf(stderr, "--scene: expected mid_game, racked, mid_roll, cue_view, ball_in_hand or aim_overhead\n");
+                std::fprintf(stderr, "--scene: expected mid_game, racked, mid_roll, cue_view, ball_in_hand, aim_overhead or cushion\n");
                 return 2;
             }
         }

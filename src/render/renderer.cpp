@@ -175,7 +175,7 @@ struct Renderer::Impl {
     GLuint solid_vao = 0, solid_vbo = 0;
     // The table's programs, one per material (cloth, cushion, wood), and the cloth's bake.
     std::array<GLuint, 5> table_progs{};  // by TableMaterial; [3] bakes
-    GLuint ball_prog = 0, shadow_prog = 0, cue_shadow_prog = 0, solid_prog = 0;
+    GLuint ball_prog = 0, shadow_prog = 0, cushion_shadow_prog = 0, cue_shadow_prog = 0, solid_prog = 0;
     GLuint cloth_tex = 0, wood_tex = 0, number_tex = 0;
     // The cloth's view-independent light, baked once over the cloth's footprint.
     GLuint cloth_light_tex = 0;
@@ -429,6 +429,7 @@ Renderer::Renderer(const physics::Table& table, double ball_radius, RenderSettin
     m.ball_prog = build_program(glsl::kBallVert, glsl::kBallFrag);
     m.shadow_prog = build_program(glsl::kShadowVert, glsl::kShadowFrag);
     m.cue_shadow_prog = build_program(glsl::kCueShadowVert, glsl::kCueShadowFrag);
+    m.cushion_shadow_prog = build_program(glsl::kTableVert, glsl::kCushionShadowFrag);
     m.solid_prog = build_program(glsl::kSolidVert, glsl::kSolidFrag);
     m.cloth_tex = upload_texture(make_cloth_texture());
     m.wood_tex = upload_texture(make_wood_texture(), true);
@@ -456,7 +457,8 @@ Renderer::~Renderer() {
     glDeleteBuffers(1, &m.solid_vbo);
     glDeleteVertexArrays(1, &m.solid_vao);
     for (GLuint p : m.table_progs) glDeleteProgram(p);
-    for (GLuint p : {m.ball_prog, m.shadow_prog, m.cue_shadow_prog, m.solid_prog}) glDeleteProgram(p);
+    for (GLuint p : {m.ball_prog, m.shadow_prog, m.cushion_shadow_prog, m.cue_shadow_prog, m.solid_prog})
+        glDeleteProgram(p);
     glDeleteTextures(1, &m.cloth_light_tex);
     glDeleteTextures(1, &m.cloth_tex);
     glDeleteTextures(1, &m.wood_tex);
@@ -512,6 +514,25 @@ void Renderer::draw(const FrameView& frame, int width, int height) {
         for (const BallView& b : frame.balls) {
             glUniform3fv(centre, 1, glm::value_ptr(b.centre));
             glDrawArrays(GL_TRIANGLES, 0, 6);
+        }
+        // On the cushions: only the balls close enough to one to shade it.
+        std::array<glm::vec3, 16> near{};
+        int near_count = 0;
+        const float near_cushion = 4.0f * m.radius, Lt = static_cast<float>(m.table.length()),
+                    Wt = static_cast<float>(m.table.width());
+        for (const BallView& b : frame.balls) {
+            const bool close = b.centre.x < near_cushion || b.centre.x > Lt - near_cushion || b.centre.y < near_cushion ||
+                               b.centre.y > Wt - near_cushion;
+            if (close && near_count < 16) near[static_cast<std::size_t>(near_count++)] = b.centre;
+        }
+        if (near_count > 0) {
+            m.set_common(m.cushion_shadow_prog, view_proj, eye);
+            glUniform3fv(glGetUniformLocation(m.cushion_shadow_prog, "u_balls"), near_count, glm::value_ptr(near[0]));
+            glUniform1i(glGetUniformLocation(m.cushion_shadow_prog, "u_ball_count"), near_count);
+            glUniform1f(glGetUniformLocation(m.cushion_shadow_prog, "u_radius"), m.radius);
+            glBindVertexArray(m.cushions.vao);
+            glDrawArrays(GL_TRIANGLES, 0, m.cushions.count);
+            glBindVertexArray(m.quad_vao);
         }
         if (cue_axis) {
             // The cue's shadow: over the cue's footprint, widened by how far the lamps throw

@@ -119,6 +119,27 @@ DemoScene aim_overhead_scene(float aspect) {
     return s;
 }
 
+DemoScene cushion_scene(float aspect) {
+    DemoScene s;
+    const physics::Params params;
+    s.table = physics::build_table(*physics::table_preset("9ft"));
+    s.ball_radius = params.ball_radius;
+    const float R = static_cast<float>(s.ball_radius), L = static_cast<float>(s.table.length()),
+                W = static_cast<float>(s.table.width());
+    const glm::vec3 spots[] = {{0.30f * L, W - R - 0.001f, R}, {0.30f * L + 0.09f, W - R - 0.001f, R},
+                               {0.30f * L + 0.20f, W - R - 0.03f, R}};
+    const int ids[] = {3, 10, 8};
+    for (int k = 0; k < 3; ++k) s.balls.push_back({ids[k], spots[k], glm::quat(initial_orientation(ids[k]))});
+    s.camera.target = {0.30f * L + 0.10f, W - 0.02f, 0.02f};
+    s.camera.eye = {0.30f * L - 0.05f, W - 0.45f, 0.17f};
+    s.camera.up = {0, 0, 1};
+    s.camera.fovy_deg = 32.0f;
+    s.camera.near_m = 0.02f;
+    s.camera.far_m = 8.0f;
+    (void)aspect;
+    return s;
+}
+
 DemoScene ball_in_hand_scene(float aspect) {
     DemoScene s = mid_game_scene(aspect, 3.0);
     s.tray = {3, 9, 14, 6, 11};

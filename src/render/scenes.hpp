@@ -37,6 +37,9 @@ DemoScene cue_view_scene(float aspect);
 /// The same aim as cue_view_scene (cue stick and aim guide) seen from the overhead camera,
 /// so the cue's shadow on the cloth shows.
 DemoScene aim_overhead_scene(float aspect);
+/// Two balls frozen to the north cushion and one a little off it, seen from low and close:
+/// their shadows fall on the cushion's nose and face.
+DemoScene cushion_scene(float aspect);
 /// After a scratch: the break's balls at rest-ish (t = 3 s), five object balls in the
 /// ball-return tray, the cue ball in hand behind the head string (kitchen shaded) on an
 /// illegal spot (red). Overhead camera.

@@ -465,6 +465,48 @@ void main() {
 }
 )";
 
+// The balls' soft shadows on the cushions: kShadowFrag's lamp-disc coverage and sphere
+// occlusion, at the cushion's own surface point and normal, for the balls near a cushion
+// (drawn over the cushions' mesh with kTableVert, multiplied onto the framebuffer).
+const char* const kCushionShadowFrag = R"(
+in vec3 v_pos;
+in vec3 v_normal;
+in vec2 v_uv;
+layout(location = 0) out vec4 o_colour;
+uniform vec3 u_balls[16];   // centres of the balls near a cushion (unit: m)
+uniform int u_ball_count;
+uniform float u_radius;
+void main() {
+    vec3 n = normalize(v_normal);
+    if (dot(n, u_eye - v_pos) < 0.0) n = -n;
+    float keep = 1.0;
+    for (int b = 0; b < 16; ++b) {
+        if (b >= u_ball_count) break;
+        vec3 to_ball = u_balls[b] - v_pos;
+        float db = length(to_ball);
+        vec3 bdir = to_ball / db;
+        float ab = asin(min(u_radius / db, 1.0));
+        float lit = 0.0, shadowed = 0.0;
+        for (int i = 0; i < 3; ++i) {
+            vec3 d = u_lamps[i].xyz - v_pos;
+            float dl = length(d);
+            vec3 ldir = d / dl;
+            float w = smoothstep(0.25, 0.6, ldir.z) * max(dot(n, ldir), 0.0) / (dl * dl);
+            float al = asin(min(u_lamps[i].w / dl, 1.0));
+            float sep = acos(clamp(dot(ldir, bdir), -1.0, 1.0));
+            float cover = 1.0 - smoothstep(abs(ab - al), ab + al, sep);
+            cover *= min(1.0, (ab * ab) / (al * al));
+            lit += w;
+            shadowed += w * cover;
+        }
+        float ambient = 0.035;
+        float ao = (u_radius * u_radius) / (db * db) * max(dot(n, bdir), 0.0);
+        keep *= (lit - shadowed + ambient * (1.0 - ao)) / (lit + ambient);
+    }
+    o_colour = vec4(vec3(keep), 1.0);
+}
+)";
+
 // The cue stick's soft shadow on the cloth: for each lamp, the closest approach of the ray
 // from the cloth point to the lamp and the cue's axis gives the cue's angular offset and
 // half-width as seen from that point; the part of the lamp's disc the cue's strip covers

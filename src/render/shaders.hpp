@@ -28,6 +28,7 @@ extern const char* const kBallVert;
 extern const char* const kBallFrag;
 extern const char* const kShadowVert;
 extern const char* const kShadowFrag;
+extern const char* const kCushionShadowFrag;  ///< with kTableVert: ball shadows on the cushions
 extern const char* const kCueShadowVert;  ///< the cue's soft shadow on the cloth
 extern const char* const kCueShadowFrag;
 extern const char* const kSolidVert;    ///< cue stick, aim guide: lit or flat-coloured geometry

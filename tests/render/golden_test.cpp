@@ -78,6 +78,8 @@ TEST_F(GoldenTest, CueBallViewWithAimGuide) { check("cue_view", draw(render::cue
 
 TEST_F(GoldenTest, AimOverheadWithCueShadow) { check("aim_overhead", draw(render::aim_overhead_scene(kAspect))); }
 
+TEST_F(GoldenTest, BallShadowsOnTheCushion) { check("cushion", draw(render::cushion_scene(kAspect))); }
+
 TEST_F(GoldenTest, BallInHandAndTray) { check("ball_in_hand", draw(render::ball_in_hand_scene(kAspect))); }
 
 TEST_F(GoldenTest, RendersAreRepeatable) {
