@@ -164,7 +164,10 @@ Plan plan(const Position& pos, const PlanSettings& settings, std::uint64_t seed)
             if (!sc.foul) best = std::max(best, sc.value);
         return best;
     };
-    if (legal_best() < good_enough) {
+    const bool pot_works = std::any_of(cands.begin(), cands.end(), [&](const Candidate& c) {
+        return c.kind == Kind::pot && nominal[static_cast<std::size_t>(&c - cands.data())].success > 0.0;
+    });
+    if (legal_best() < good_enough || !pot_works) {
         const std::size_t from = cands.size();
         for (physics::Vec2 cue : spots) {
             std::vector<Candidate> kicks = kick_candidates(pos, cue, in_hand, effort);
@@ -189,7 +192,8 @@ Plan plan(const Position& pos, const PlanSettings& settings, std::uint64_t seed)
     Candidate chosen = cands[best];
     double chosen_value = noisy[best].value, chosen_success = noisy[best].success;
 
-    if (rules::push_out_allowed(pos.ruleset.game, pos.state) && chosen_value < good_enough) {
+    if (rules::push_out_allowed(pos.ruleset.game, pos.state) && !in_hand &&
+        chosen_value < good_enough) {
         std::vector<Candidate> pushes = push_out_candidates(pos, pos.state.positions.at(0));
         std::vector<Score> push_nominal;
         score_nominal(s, pushes, push_nominal, 0);

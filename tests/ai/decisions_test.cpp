@@ -115,6 +115,24 @@ TEST(Decisions, AnswersChoicesWithAnOfferedOption) {
                 *p.decision.choice == rules::ChoiceOption::pass_back);
 }
 
+TEST(Decisions, PushesOutOnlyWhereAllowedAndLegally) {
+    // 9-ball: the 1 hidden behind a wall of balls from the cue ball.
+    std::map<int, Vec2> balls{{0, {0.4, 0.635}}, {1, {2.3, 0.635}}, {9, {1.0, 1.1}}};
+    const int wall[] = {2, 3, 4, 5, 6, 7, 8};
+    for (int k = 0; k < 7; ++k) balls[wall[k]] = {2.15, 0.635 + (k - 3) * 0.06};
+    ai::Position pos = position(Game::nine_ball, {1, 2, 3, 4, 5, 6, 7, 8, 9}, balls);
+    const ai::Plan normal = ai::plan(pos, {3, 1.0, 2}, 2);
+    EXPECT_FALSE(normal.decision.push_out) << "no push-out on a normal shot";
+    pos.state.shot = rules::Shot::after_break;
+    const ai::Plan after = ai::plan(pos, {3, 1.0, 2}, 2);
+    const rules::Verdict v = play(pos, after.decision);
+    if (after.decision.push_out) {
+        ASSERT_TRUE(v.choice.has_value());
+        EXPECT_EQ(v.choice->by, rules::Player::B);
+    }
+    EXPECT_FALSE(v.game_over);
+}
+
 TEST(Decisions, SameSeedSameDecisionWhateverTheThreads) {
     ai::Position pos = position(Game::eight_ball, {1, 4, 8, 11, 14},
                                 {{0, {1.0, 0.6}}, {1, {1.7, 0.9}}, {4, {2.2, 0.3}},

@@ -82,6 +82,23 @@ TEST(Decide, AnswersAPendingChoice) {
     EXPECT_TRUE(j["stroke"].is_null());
 }
 
+TEST(Decide, OddButValidStatesNeverCrash) {
+    // A hand-made 9-ball state right after the break with the cue ball in hand; and one with the
+    // push-out already declared.
+    for (const char* state :
+         {R"({"shooter": "A", "breaker": "B", "shot": "after_break", "on_table": [1, 9],
+              "cue_ball": "in_hand", "positions": {"1": [1.5, 0.6], "9": [2.0, 1.0]}})",
+          R"({"shooter": "A", "breaker": "B", "shot": "push_out", "on_table": [1, 9],
+              "cue_ball": "on_table", "positions": {"0": [0.4, 0.4], "1": [1.5, 0.6], "9": [2.0, 1.0]}})"}) {
+        const cli_test::CliResult r = cli_test::run_cli(
+            "decide", std::string(R"({"game": "9ball", "level": 1, "state": )") + state + "}");
+        EXPECT_TRUE(r.status == 0 || r.status == 2) << r.err;
+        if (r.status == 0) {
+            EXPECT_TRUE(json::parse(r.out)["stroke"].is_object());
+        }
+    }
+}
+
 struct BadCase {
     std::string name, input, path, message;
 };
