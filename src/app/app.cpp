@@ -15,6 +15,7 @@
 #include <tuple>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <numbers>
 
 #include "app/camera_rig.hpp"
@@ -59,12 +60,14 @@ struct Table {
     CameraRig rig;
     PanelState panel;
     render::Camera last_camera;
+    Settings saved;  ///< the settings as last written
     bool exit_requested = false;
 
     explicit Table(GameSetup s)
         : setup(std::move(s)), controller(std::move(*setup.session), setup.controller),
           rig(camera_mode(setup.settings.view)) {
         panel.notice = setup.notice;
+        saved = setup.settings;
         controller.set_power(setup.settings.power);
     }
 
@@ -121,6 +124,19 @@ struct Table {
         }
     }
 
+    /// Writes the settings when they changed (the Sound checkbox, the power, the view...), so
+    /// they persist at once and not only on Exit.
+    void persist_settings() {
+        if (setup.settings == saved) return;
+        try {
+            save_settings(setup.settings_path, setup.settings);
+            saved = setup.settings;
+        } catch (const std::exception& e) {
+            panel.notice = std::string("The settings could not be saved: ") + e.what();
+            saved = setup.settings;  // say it once
+        }
+    }
+
     void save_and_close() {
         const std::string err = save_on_exit(controller.session(), setup.autosave_path);
         if (!err.empty()) std::fprintf(stderr, "coolaaber: the game was not saved: %s\n", err.c_str());
@@ -143,6 +159,13 @@ int run_window(const AppOptions& options) {
     } catch (const game::LoadError& e) {
         std::fprintf(stderr, "error: %s\n", e.what());
         return 2;
+    }
+    const auto set = [](const char* v) { return std::getenv(v) && *std::getenv(v); };
+    if (!set("DISPLAY") && !set("WAYLAND_DISPLAY") && !set("SDL_VIDEODRIVER")) {
+        std::fprintf(stderr, "coolaaber: no display (DISPLAY and WAYLAND_DISPLAY are not set): run it in a desktop "
+                             "session, under a virtual display (xvfb-run -a ./play), or render a picture with "
+                             "--screenshot FILE\n");
+        return 1;
     }
     if (SDL_Init(SDL_INIT_VIDEO | SDL_INIT_TIMER) != 0) {
         std::fprintf(stderr, "coolaaber: cannot open a window: %s (is a display available? try xvfb-run)\n",
@@ -319,6 +342,7 @@ int run_window(const AppOptions& options) {
                                                     static_cast<float>(h), ai_available());
             ImGui::Render();
             t.apply(actions);
+            if (!mouse_down[0] && !mouse_down[1] && !mouse_down[2]) t.persist_settings();  // not mid-drag
             const float aspect = static_cast<float>(painter.view_width()) / static_cast<float>(painter.height());
             t.last_camera = t.camera(aspect);
             sound.set_listener(listener_of(t.last_camera));

@@ -149,6 +149,11 @@ def controls(exe, work):
         g.click_widget("Sound")
         g.wait(lambda s: s["sound"] is False, 10, "the sound off")
         check(True, "the Sound checkbox turns the sound off")
+        settings = os.path.join(work, "config", "coolaaber", "settings.json")
+        end = time.time() + 10
+        while time.time() < end and not (os.path.exists(settings) and json.load(open(settings))["sound"] is False):
+            time.sleep(0.1)
+        check(json.load(open(settings))["sound"] is False, "the setting is saved at once")
         g.click_widget("Sound")
         g.wait(lambda s: s["sound"] is True, 10, "the sound on")
         check(True, "and on again")
