@@ -350,7 +350,11 @@ int run_window(const AppOptions& options) {
             painter.draw(scene, t.last_camera, ImGui::GetDrawData());
             painter.present();
             SDL_GL_SwapWindow(window);
-            if (status) status->write(status_json(t.controller, t.setup.settings, t.rig.mode(), t.panel.widgets, ++frames));
+            ++frames;
+            if (status)
+                status->write(status_json(t.controller, t.setup.settings, t.rig.mode(),
+                                          {t.panel.widgets, frames, scene.cue.has_value(), scene.show_aim,
+                                           scene.ball_in_hand.has_value()}));
         }
         t.save_and_close();
         ImGui_ImplOpenGL3_Shutdown();

@@ -31,8 +31,7 @@ const char* view_name(CameraMode m) {
 
 }  // namespace
 
-std::string status_json(const Controller& c, const Settings& s, CameraMode view,
-                        const std::map<std::string, std::array<float, 4>>& widgets, long frames) {
+std::string status_json(const Controller& c, const Settings& s, CameraMode view, const FrameFacts& frame) {
     const game::Session& session = c.session();
     nlohmann::ordered_json j;
     j["phase"] = phase_name(session.phase());
@@ -54,8 +53,9 @@ std::string status_json(const Controller& c, const Settings& s, CameraMode view,
     j["cue_ball"] = cue != session.state().positions.end() ? nlohmann::ordered_json::array({cue->second.x, cue->second.y})
                                                            : nlohmann::ordered_json(nullptr);
     j["balls_on_table"] = session.state().on_table.size();
-    j["widgets"] = widgets;
-    j["frames"] = frames;
+    j["widgets"] = frame.widgets;
+    j["frames"] = frame.frames;
+    j["drawn"] = {{"cue", frame.cue}, {"aim_guide", frame.aim_guide}, {"ball_in_hand", frame.ball_in_hand}};
     return j.dump() + "\n";
 }
 

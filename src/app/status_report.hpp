@@ -15,10 +15,16 @@ namespace app {
 
 /// {"phase", "to_act", "moving", "busy", "view", "sound", "power", "shots", "game_number",
 ///  "info": [lines], "last_shot", "refusal", "winner", "heading_deg", "cue_ball", "balls_on_table"}
-/// `widgets`: where the panel's labelled widgets are (PanelState::widgets), as "widgets";
-/// `frames`: frames drawn so far (for measuring the frame rate).
-std::string status_json(const Controller& c, const Settings& s, CameraMode view,
-                        const std::map<std::string, std::array<float, 4>>& widgets, long frames);
+/// What the last frame showed, beside the controller's state.
+struct FrameFacts {
+    std::map<std::string, std::array<float, 4>> widgets;  ///< PanelState::widgets
+    long frames = 0;           ///< frames drawn so far (for measuring the frame rate)
+    bool cue = false;          ///< the cue stick was drawn
+    bool aim_guide = false;    ///< the aim guide was drawn
+    bool ball_in_hand = false; ///< the ball-in-hand marker was drawn
+};
+
+std::string status_json(const Controller& c, const Settings& s, CameraMode view, const FrameFacts& frame);
 
 /// Writes `text` to `path` atomically when it differs from the last text written.
 class StatusFile {

@@ -9,6 +9,8 @@ information bar, whose turn, whether the balls move, where the panel's buttons a
       for the balls to stop, Change View, the Sound checkbox, Restart (confirmed), Exit (status 0)
   end_to_end.py game COOLAABER WORKDIR       a whole game between two scripted players (the test
       hook --players random,random) ends with the winner in the information bar
+  end_to_end.py hinted COOLAABER WORKDIR     a human plays a whole game against the AI: Hint,
+      then a right click to strike, every turn (needs a build with src/ai)
 """
 import json
 import os
@@ -189,7 +191,39 @@ def whole_game(exe, work):
         g.close()
 
 
+def hinted_game(exe, work):
+    """A human plays a whole 9-ball game against the AI with the real mouse: on each turn he
+    asks for a Hint, then strikes with a right click (press and release)."""
+    g = Game(exe, work, "--seed", "8", "--game", "9ball", "--players", "human,ai:1", "--playback-speed", "4")
+    try:
+        strikes = 0
+        while True:
+            s = g.wait(lambda s: not s["busy"] and (s["winner"] or s["to_act"] == "Player 1"), 120, "my turn")
+            if s["winner"]:
+                break
+            if s["phase"] == "choose":
+                options = [k for k in s["widgets"] if k in ("Shoot from here", "Pass the shot back")]
+                g.click_widget(options[0])
+                continue
+            before = s["shots"]
+            g.click_widget("Hint")
+            s = g.wait(lambda s: not s["busy"] and s["drawn"]["cue"], 60, "the hint")
+            g.move(400, 660)
+            time.sleep(0.2)
+            g.xdo("mousedown", "--window", g.window, "3")
+            time.sleep(0.1)
+            g.xdo("mouseup", "--window", g.window, "3")
+            g.wait(lambda s: s["shots"] > before, 20, "the strike")
+            strikes += 1
+            if strikes > 60:
+                raise AssertionError("the game did not end in 60 of my shots")
+        check(s["info"][0] == f"{s['winner']} wins!", f"a game against the AI ends: {s['info'][0]!r} after {s['shots']} shots")
+        g.screenshot("hinted-game-over.png")
+    finally:
+        g.close()
+
+
 if __name__ == "__main__":
     test, exe, work = sys.argv[1], sys.argv[2], sys.argv[3]
-    {"controls": controls, "game": whole_game}[test](exe, work)
+    {"controls": controls, "game": whole_game, "hinted": hinted_game}[test](exe, work)
     print("passed")
