@@ -526,12 +526,44 @@ void Renderer::draw(const FrameView& frame, int width, int height) {
             if (close && near_count < 16) near[static_cast<std::size_t>(near_count++)] = b.centre;
         }
         if (near_count > 0) {
+            // One pass per ball, scissored to the screen box of the cushion round it, so only
+            // those few pixels run the shader.
             m.set_common(m.cushion_shadow_prog, view_proj, eye);
-            glUniform3fv(glGetUniformLocation(m.cushion_shadow_prog, "u_balls"), near_count, glm::value_ptr(near[0]));
-            glUniform1i(glGetUniformLocation(m.cushion_shadow_prog, "u_ball_count"), near_count);
+            glUniform1i(glGetUniformLocation(m.cushion_shadow_prog, "u_ball_count"), 1);
             glUniform1f(glGetUniformLocation(m.cushion_shadow_prog, "u_radius"), m.radius);
+            const GLint u_balls = glGetUniformLocation(m.cushion_shadow_prog, "u_balls");
             glBindVertexArray(m.cushions.vao);
-            glDrawArrays(GL_TRIANGLES, 0, m.cushions.count);
+            glEnable(GL_SCISSOR_TEST);
+            for (int k = 0; k < near_count; ++k) {
+                const glm::vec3 c = near[static_cast<std::size_t>(k)];
+                glm::vec2 lo{1e9f}, hi{-1e9f};
+                bool behind = false;
+                for (int corner = 0; corner < 8; ++corner) {
+                    const glm::vec3 p{c.x + (corner & 1 ? 4.0f : -4.0f) * m.radius, c.y + (corner & 2 ? 4.0f : -4.0f) * m.radius,
+                                      corner & 4 ? m.dims.rail_height : 0.0f};
+                    const glm::vec4 clip = view_proj * glm::vec4(p, 1.0f);
+                    if (clip.w <= 1e-4f) {
+                        behind = true;
+                        break;
+                    }
+                    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+                    lo = glm::min(lo, ndc);
+                    hi = glm::max(hi, ndc);
+                }
+                if (behind) {
+                    glScissor(0, 0, width, height);
+                } else {
+                    if (hi.x < -1.0f || hi.y < -1.0f || lo.x > 1.0f || lo.y > 1.0f) continue;
+                    const auto px = [](float v, int size) {
+                        return std::clamp(static_cast<int>(std::floor((0.5f * v + 0.5f) * static_cast<float>(size))), 0, size);
+                    };
+                    const int x0 = px(lo.x, width), y0 = px(lo.y, height), x1 = px(hi.x, width) + 1, y1 = px(hi.y, height) + 1;
+                    glScissor(x0, y0, std::min(x1, width) - x0, std::min(y1, height) - y0);
+                }
+                glUniform3fv(u_balls, 1, glm::value_ptr(c));
+                glDrawArrays(GL_TRIANGLES, 0, m.cushions.count);
+            }
+            glDisable(GL_SCISSOR_TEST);
             glBindVertexArray(m.quad_vao);
         }
         if (cue_axis) {
