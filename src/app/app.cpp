@@ -150,16 +150,21 @@ struct Table {
 
 bool key_shift() { return (SDL_GetModState() & KMOD_SHIFT) != 0; }
 
+// The game to start, or empty (the reason on stderr) when a --load file is bad.
+std::optional<GameSetup> set_up_or_report(const AppOptions& options) {
+    try {
+        return set_up_game(options);
+    } catch (const game::LoadError& e) {
+        std::fprintf(stderr, "error: %s\n", e.what());
+        return std::nullopt;
+    }
+}
+
 }  // namespace
 
 int run_window(const AppOptions& options) {
-    std::optional<GameSetup> setup;
-    try {
-        setup = set_up_game(options);
-    } catch (const game::LoadError& e) {
-        std::fprintf(stderr, "error: %s\n", e.what());
-        return 2;
-    }
+    std::optional<GameSetup> setup = set_up_or_report(options);
+    if (!setup) return 2;
     const auto set = [](const char* v) { return std::getenv(v) && *std::getenv(v); };
     if (!set("DISPLAY") && !set("WAYLAND_DISPLAY") && !set("SDL_VIDEODRIVER")) {
         std::fprintf(stderr, "coolaaber: no display (DISPLAY and WAYLAND_DISPLAY are not set): run it in a desktop "
@@ -200,7 +205,6 @@ int run_window(const AppOptions& options) {
     SDL_GL_MakeCurrent(window, gl);
     SDL_GL_SetSwapInterval(1);
 
-    int exit_status = 0;
     {
         Table t(std::move(*setup));
         create_imgui();
@@ -364,17 +368,12 @@ int run_window(const AppOptions& options) {
     SDL_GL_DeleteContext(gl);
     SDL_DestroyWindow(window);
     SDL_Quit();
-    return exit_status;
+    return 0;
 }
 
 int run_screenshot(const AppOptions& options) {
-    std::optional<GameSetup> setup;
-    try {
-        setup = set_up_game(options);
-    } catch (const game::LoadError& e) {
-        std::fprintf(stderr, "error: %s\n", e.what());
-        return 2;
-    }
+    std::optional<GameSetup> setup = set_up_or_report(options);
+    if (!setup) return 2;
     try {
         render::HeadlessContext context;
         const int w = setup->settings.window_width, h = setup->settings.window_height;

@@ -59,6 +59,19 @@ std::optional<std::pair<double, double>> spin_picker(double side, double top, bo
     return std::nullopt;
 }
 
+// "Human", "Computer (random)", "Computer level 3".
+std::string seat_words(const std::string& kind) {
+    if (kind == "human") return "Human";
+    if (kind == "random") return "Computer (random)";
+    return "Computer level " + kind.substr(3);
+}
+
+// The New Game dialog opens with the current settings as its draft.
+void open_new_game(PanelState& st, const Settings& settings) {
+    st.draft = NewGame{settings.game, settings.names, settings.players, settings.house_rules};
+    st.new_game_open = true;
+}
+
 void new_game_dialog(PanelState& st, PanelActions& out, bool ai_available) {
     if (st.new_game_open) {
         ImGui::OpenPopup("New Game");
@@ -84,11 +97,9 @@ void new_game_dialog(PanelState& st, PanelActions& out, bool ai_available) {
         ImGui::SameLine();
         ImGui::SetNextItemWidth(130);
         const std::string& current = d.players[static_cast<std::size_t>(i)];
-        const std::string label = current == "human" ? "Human" : current == "random" ? "Computer (random)" : "Computer level " + current.substr(3);
-        if (ImGui::BeginCombo("##kind", label.c_str())) {
+        if (ImGui::BeginCombo("##kind", seat_words(current).c_str())) {
             for (const std::string& k : kinds) {
-                const std::string l = k == "human" ? "Human" : k == "random" ? "Computer (random)" : "Computer level " + k.substr(3);
-                if (ImGui::Selectable(l.c_str(), k == current)) d.players[static_cast<std::size_t>(i)] = k;
+                if (ImGui::Selectable(seat_words(k).c_str(), k == current)) d.players[static_cast<std::size_t>(i)] = k;
             }
             ImGui::EndCombo();
         }
@@ -219,10 +230,7 @@ PanelActions draw_panel(const Controller& c, const Settings& settings, PanelStat
         if (full_button(st, "Replay")) out.replay = true;
     }
     ImGui::Separator();
-    if (full_button(st, "New Game...")) {
-        st.draft = NewGame{settings.game, settings.names, settings.players, settings.house_rules};
-        st.new_game_open = true;
-    }
+    if (full_button(st, "New Game...")) open_new_game(st, settings);
     if (ImGui::CollapsingHeader("Controls")) {
         ImGui::TextDisabled("Right-drag: aim, release: strike");
         ImGui::TextDisabled("Left-drag: aim (or move ball in hand)");
@@ -258,8 +266,7 @@ PanelActions draw_panel(const Controller& c, const Settings& settings, PanelStat
     if (ImGui::BeginPopupModal("Menu", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
         if (ImGui::Button("Resume", ImVec2(200, 0))) ImGui::CloseCurrentPopup();
         if (ImGui::Button("New Game...", ImVec2(200, 0))) {
-            st.draft = NewGame{settings.game, settings.names, settings.players, settings.house_rules};
-            st.new_game_open = true;
+            open_new_game(st, settings);
             ImGui::CloseCurrentPopup();
         }
         if (ImGui::Button("Restart", ImVec2(200, 0))) {
