@@ -211,7 +211,8 @@ PanelActions draw_panel(const Controller& c, const Settings& settings, PanelStat
         bool push = s.state().shot == rules::Shot::push_out;
         if (ImGui::Checkbox("Push-out", &push)) out.push_out = push;
     }
-    if (s.config().game == rules::Game::eight_ball && s.state().shot != rules::Shot::break_shot && mine) {
+    if (s.config().game == rules::Game::eight_ball && s.state().shot != rules::Shot::break_shot && mine &&
+        s.phase() == game::Phase::shoot) {
         if (ImGui::Button("Call safety")) out.call_safety = true;
         if (c.call_is_manual()) {
             ImGui::SameLine();
