@@ -479,15 +479,19 @@ void Renderer::draw(const FrameView& frame, int width, int height) {
     const glm::vec3 bg = glm::pow(kBackground, glm::vec3(1.0f / 2.2f));
     glClearColor(bg.x, bg.y, bg.z, 1.0f);
     glClearDepth(1.0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glDisable(GL_SCISSOR_TEST);  // a UI drawn before may have left it on; clear and copy need it off
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
 
-    // 1. The table: from the cache when it can be, else drawn.
-    if (!(m.settings.cache_table && m.use_cache(frame, width, height, view_proj))) m.draw_table(view_proj, eye);
+    // 1. The table: from the cache when it can be (its copy overwrites colour and depth, so
+    // no clear), else cleared and drawn.
+    if (!(m.settings.cache_table && m.use_cache(frame, width, height, view_proj))) {
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        m.draw_table(view_proj, eye);
+    }
 
     // The cue stick's axis: tip and butt centres, radii.
     struct CueAxis {
