@@ -351,8 +351,8 @@ int run_window(const AppOptions& options) {
             t.last_camera = t.camera(aspect);
             sound.set_listener(listener_of(t.last_camera));
             const SceneFrame scene = build_scene(t.controller, t.setup.settings.aim_guide, input.dragged_to());
-            painter.draw(scene, t.last_camera, ImGui::GetDrawData());
-            painter.present();
+            painter.draw_table(scene, t.last_camera);
+            painter.show(ImGui::GetDrawData());
             SDL_GL_SwapWindow(window);
             ++frames;
             if (status)
@@ -395,8 +395,8 @@ int run_screenshot(const AppOptions& options) {
         const float aspect = static_cast<float>(painter.view_width()) / static_cast<float>(painter.height());
         t.rig.update(10.0);
         t.last_camera = t.camera(aspect);
-        painter.draw(build_scene(t.controller, t.setup.settings.aim_guide), t.last_camera, ImGui::GetDrawData());
-        if (!render::write_png(options.screenshot->string(), render::read_pixels(w, h)))
+        painter.draw_table(build_scene(t.controller, t.setup.settings.aim_guide), t.last_camera);
+        if (!render::write_png(options.screenshot->string(), painter.capture(ImGui::GetDrawData())))
             throw std::runtime_error("cannot write " + options.screenshot->string());
         ImGui_ImplOpenGL3_Shutdown();
         destroy_imgui();

@@ -15,27 +15,46 @@ Painter::Painter(const physics::Table& table, double ball_radius) : renderer_(ta
 void Painter::resize(int width, int height) {
     width = std::max(width, 64);
     height = std::max(height, 64);
-    if (target_ && width == width_ && height == height_) return;
+    if (view_ && width == width_ && height == height_) return;
     width_ = width;
     height_ = height;
-    target_ = std::make_unique<render::OffscreenTarget>(width_, height_, 4);
+    view_ = std::make_unique<render::OffscreenTarget>(view_width(), height_, 4);
+    picture_.reset();
 }
 
 int Painter::view_width() const { return std::max(16, width_ - static_cast<int>(panel_width)); }
 
-void Painter::draw(const SceneFrame& scene, const render::Camera& camera, ImDrawData* panel) {
-    target_->bind();
+void Painter::draw_table(const SceneFrame& scene, const render::Camera& camera) {
+    view_->bind();
     renderer_.draw(scene.view(camera), view_width(), height_);
-    if (panel) {
-        glViewport(0, 0, width_, height_);
-        ImGui_ImplOpenGL3_RenderDrawData(panel);
-    }
-    target_->resolve();
+    view_->resolve();  // leaves the resolved table image bound for reading
 }
 
-void Painter::present() const {
+void Painter::compose(unsigned table_image, ImDrawData* panel) const {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, table_image);
+    glDisable(GL_SCISSOR_TEST);
+    glViewport(0, 0, width_, height_);
+    glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glBlitFramebuffer(0, 0, view_width(), height_, 0, 0, view_width(), height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    if (panel) ImGui_ImplOpenGL3_RenderDrawData(panel);
+}
+
+void Painter::show(ImDrawData* panel) {
+    GLint table_image = 0;
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &table_image);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    compose(static_cast<unsigned>(table_image), panel);
+}
+
+render::Image Painter::capture(ImDrawData* panel) {
+    GLint table_image = 0;
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &table_image);
+    if (!picture_) picture_ = std::make_unique<render::OffscreenTarget>(width_, height_, 1);
+    picture_->bind();
+    compose(static_cast<unsigned>(table_image), panel);
+    picture_->resolve();
+    return render::read_pixels(width_, height_);
 }
 
 }  // namespace app

@@ -1,10 +1,11 @@
-// Draws one frame of the game — the table view at the left, the panel at the right — into an
-// offscreen multisampled target, which the window then shows (or a screenshot reads).
+// Draws one frame of the game: the table view (multisampled, offscreen, as wide as the window
+// less the panel) and the panel over the rest, into the window or into an image.
 #pragma once
 
 #include <memory>
 
 #include "app/scene_frame.hpp"
+#include "render/image.hpp"
 #include "render/renderer.hpp"
 
 struct ImDrawData;
@@ -16,18 +17,23 @@ class Painter {
     Painter(const physics::Table& table, double ball_radius);
     /// The window's size in pixels (the panel included).
     void resize(int width, int height);
-    /// Draws the table into the view (width − panel) and the panel's draw data over it; leaves
-    /// the resolved image bound for reading.
-    void draw(const SceneFrame& scene, const render::Camera& camera, ImDrawData* panel);
-    /// Copies the image to the window's framebuffer.
-    void present() const;
+    /// Draws the table into the view at the left (width − panel).
+    void draw_table(const SceneFrame& scene, const render::Camera& camera);
+    /// Shows the table view and the panel in the window's framebuffer (then swap).
+    void show(ImDrawData* panel);
+    /// The table view and the panel as an image (the offscreen screenshot).
+    render::Image capture(ImDrawData* panel);
     int width() const { return width_; }
     int height() const { return height_; }
     int view_width() const;
 
   private:
+    /// Copies the table view into the bound draw framebuffer and draws the panel over it.
+    void compose(unsigned table_image, ImDrawData* panel) const;
+
     render::Renderer renderer_;
-    std::unique_ptr<render::OffscreenTarget> target_;
+    std::unique_ptr<render::OffscreenTarget> view_;     ///< the table, multisampled
+    std::unique_ptr<render::OffscreenTarget> picture_;  ///< capture(): the whole window
     int width_ = 0, height_ = 0;
 };
 
