@@ -34,9 +34,9 @@ unsigned compile(GLenum type, const std::string& source) {
 
 }  // namespace
 
-unsigned build_program(std::string_view vertex_body, std::string_view fragment_body) {
-    GLuint vs = compile(GL_VERTEX_SHADER, shader_source(vertex_body));
-    GLuint fs = compile(GL_FRAGMENT_SHADER, shader_source(std::string(glsl::kCommon) + std::string(fragment_body)));
+unsigned build_program(std::string_view vertex_body, std::string_view fragment_body, GlslTarget target) {
+    GLuint vs = compile(GL_VERTEX_SHADER, shader_source(vertex_body, target));
+    GLuint fs = compile(GL_FRAGMENT_SHADER, shader_source(std::string(glsl::kCommon) + std::string(fragment_body), target));
     GLuint p = glCreateProgram();
     glAttachShader(p, vs);
     glAttachShader(p, fs);

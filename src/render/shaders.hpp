@@ -13,7 +13,8 @@ enum class GlslTarget { gl33, es300 };
 std::string shader_source(std::string_view body, GlslTarget target = GlslTarget::gl33);
 
 /// Compiles and links a program; throws std::runtime_error with the info log on failure.
-unsigned build_program(std::string_view vertex_body, std::string_view fragment_body);
+unsigned build_program(std::string_view vertex_body, std::string_view fragment_body,
+                       GlslTarget target = GlslTarget::gl33);
 
 /// The table shader's materials, each its own program.
 enum class TableMaterial { cloth = 0, cushion = 1, wood = 2, cloth_bake = 3, rail_top = 4 };
