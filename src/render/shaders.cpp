@@ -246,6 +246,12 @@ void main() {
     if (kMaterial == 2) {
         // The bevels and the table's sides (the rail tops are material 4): no pocket reaches
         // them, so no hole test (and no discard, which would cost llvmpipe its early depth test).
+        // Seen from inside the table (through a pocket's hole in the rail top), the sides'
+        // inner faces are the dark of the pocket's leather, not lit wood.
+        if (dot(n.xy, 0.5 * u_table.xy - v_pos.xy) > 0.0) {
+            o_colour = vec4(u_liner_shown, 1.0);
+            return;
+        }
         vec3 albedo = texture(u_wood_tex, vec2(v_uv.x / 1.3, v_uv.y / 0.16)).rgb;  // an sRGB texture: linear when sampled
         c = lamps_light_cheap(v_pos, n, albedo, 6, 0.25) + albedo * 0.06;
         o_colour = vec4(tone_map(apply_fog(c, v_pos)), 1.0);
