@@ -432,6 +432,9 @@ Renderer::Renderer(const physics::Table& table, double ball_radius, RenderSettin
     m.cushion_shadow_prog = build_program(glsl::kTableVert, glsl::kCushionShadowFrag);
     m.solid_prog = build_program(glsl::kSolidVert, glsl::kSolidFrag);
     m.cloth_tex = upload_texture(make_cloth_texture());
+    // One mip level per pixel, not two: the cloth is most of the frame, and the nap's levels
+    // differ too little for the switch between them to show (looked at in the cue view).
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
     m.wood_tex = upload_texture(make_wood_texture(), true);
     m.number_tex = upload_texture(make_number_atlas(settings.number_font));
     // Mipmaps down to 4 texels a cell, so far-away numbers blur instead of mixing cells.
