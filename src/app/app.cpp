@@ -323,7 +323,7 @@ int run_window(const AppOptions& options) {
                 if (t.controller.moving()) sound.start(t.controller.playback().shot());
             }
             sound.set_muted(!t.setup.settings.sound);
-            if (t.controller.moving()) sound.update(t.controller.playback().time());
+            if (t.controller.moving() && t.controller.playback().time() >= 0.0) sound.update(t.controller.playback().time());
             const bool redraw = had_event || animating || signature() != before;
             if (!redraw) continue;
 

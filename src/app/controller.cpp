@@ -198,7 +198,7 @@ void Controller::play(const physics::Stroke& stroke) {
     dry_shots_ = record->summary.down.empty() ? dry_shots_ + 1 : 0;
     preview_.reset();
     computer_decision_.reset();
-    playback_.start(*session_.last_shot());
+    playback_.start(*session_.last_shot(), stroke_lead);
     orientations_.begin_shot();
     at_strike_ = orientations_;
     ++shot_serial_;
@@ -269,8 +269,7 @@ void Controller::apply_hint(const game::Decision& d) {
             // keep the cue ball where the player put it
         }
     }
-    const double power = std::clamp((d.stroke.speed - min_cue_speed) / (max_cue_speed - min_cue_speed), 0.0, 1.0);
-    aim_ = human_aim_ = Aim{d.stroke.heading_deg, power, d.stroke.side, d.stroke.top, d.stroke.elevation_deg};
+    aim_ = human_aim_ = Aim{d.stroke.heading_deg, power_of_speed(d.stroke.speed), d.stroke.side, d.stroke.top, d.stroke.elevation_deg};
     if (d.call.is_ball() || d.call.is_safety()) manual_call_ = d.call;
     refresh_preview();
 }
@@ -307,8 +306,7 @@ void Controller::apply_computer(const game::Decision& d) {
         refusal_ = std::string("the computer player's decision was refused: ") + e.what();
         return;
     }
-    const double speed = std::clamp((d.stroke.speed - min_cue_speed) / (max_cue_speed - min_cue_speed), 0.0, 1.0);
-    aim_ = Aim{d.stroke.heading_deg, speed, d.stroke.side, d.stroke.top, d.stroke.elevation_deg};
+    aim_ = Aim{d.stroke.heading_deg, power_of_speed(d.stroke.speed), d.stroke.side, d.stroke.top, d.stroke.elevation_deg};
     refresh_preview();
     computer_decision_ = d;
     computer_aim_left_ = options_.computer_aim_seconds;
@@ -439,7 +437,7 @@ void Controller::skip() {
 void Controller::replay() {
     if (busy() || !settled_ || !playback_.has_shot()) return;
     orientations_ = at_strike_;
-    playback_.restart();
+    playback_.restart(stroke_lead);
     ++shot_serial_;
 }
 

@@ -41,8 +41,16 @@ struct ControllerOptions {
     double computer_aim_seconds = 0.9;  ///< how long the computer's aim is shown before it strikes
 };
 
+/// The cue's stroke shown before each shot's playback (unit: s).
+inline constexpr double stroke_lead = 0.15;
 inline constexpr double min_cue_speed = 0.3;  ///< the Power slider at 0 (unit: m/s)
 inline constexpr double max_cue_speed = 8.0;  ///< the Power slider at 1 (unit: m/s)
+
+/// The Power slider's position (0–1) for a cue speed (unit: m/s).
+inline double power_of_speed(double speed) {
+    const double p = (speed - min_cue_speed) / (max_cue_speed - min_cue_speed);
+    return p < 0.0 ? 0.0 : p > 1.0 ? 1.0 : p;
+}
 
 class Controller {
   public:

@@ -4,9 +4,9 @@
 
 namespace app {
 
-void Playback::start(physics::Shot shot) {
+void Playback::start(physics::Shot shot, double lead) {
     shot_ = std::move(shot);
-    t_ = 0.0;
+    t_ = -lead;
 }
 
 double Playback::end() const {
@@ -22,7 +22,7 @@ void Playback::advance(double dt) {
 
 std::vector<physics::BallState> Playback::states() const {
     if (!shot_) return {};
-    return shot_->states_at(t_);
+    return shot_->states_at(std::max(0.0, t_));
 }
 
 }  // namespace app

@@ -5,6 +5,13 @@
 
 namespace app {
 
+namespace {
+
+// How far the cue is drawn back from the ball at a Power slider position (unit: m).
+float pull_back(double power) { return static_cast<float>(0.015 + 0.22 * power); }
+
+}  // namespace
+
 render::FrameView SceneFrame::view(const render::Camera& camera) const {
     render::FrameView v;
     v.balls = balls;
@@ -31,10 +38,24 @@ SceneFrame build_scene(const Controller& c, bool aim_guide, std::optional<physic
         k.cue_ball = {static_cast<float>(cue->second.x), static_cast<float>(cue->second.y)};
         k.heading = static_cast<float>(a.heading_deg * std::numbers::pi / 180.0);
         k.elevation = static_cast<float>(a.elevation_deg * std::numbers::pi / 180.0);
-        k.pull_back = static_cast<float>(0.015 + 0.22 * a.power);
+        k.pull_back = pull_back(a.power);
         f.cue = k;
         f.aim = preview->view;
         f.show_aim = aim_guide;
+    }
+    // The stroke: before the strike the cue moves from where it was drawn back to the ball.
+    const game::Session& s = c.session();
+    if (c.moving() && c.playback().time() < 0.0 && !s.history().empty()) {
+        const game::ShotRecord& r = s.history().back();
+        const auto at = r.before.positions.find(0);
+        if (at != r.before.positions.end()) {
+            render::CueView k;
+            k.cue_ball = {static_cast<float>(at->second.x), static_cast<float>(at->second.y)};
+            k.heading = static_cast<float>(r.stroke.heading_deg * std::numbers::pi / 180.0);
+            k.elevation = static_cast<float>(r.stroke.elevation_deg * std::numbers::pi / 180.0);
+            k.pull_back = pull_back(power_of_speed(r.stroke.speed)) * static_cast<float>(-c.playback().time() / stroke_lead);
+            f.cue = k;
+        }
     }
     const rules::BallInHand in_hand = c.session().ball_in_hand();
     if (c.human_to_act() && in_hand != rules::BallInHand::none && cue != c.session().state().positions.end()) {

@@ -42,8 +42,9 @@ TEST(Controller, AStrikePlaysTheShotBackInRealTimeThenPassesTheTurn) {
     EXPECT_EQ(c.session().history().size(), 1u);
     const double end = c.playback().end();
     EXPECT_GT(end, 1.0);
+    EXPECT_DOUBLE_EQ(c.playback().time(), -app::stroke_lead);  // the cue's stroke first
     c.update(0.5);
-    EXPECT_NEAR(c.playback().time(), 0.5, 1e-12);
+    EXPECT_NEAR(c.playback().time(), 0.5 - app::stroke_lead, 1e-12);
     EXPECT_TRUE(c.moving());
     run_until_idle(c);
     EXPECT_FALSE(c.moving());
@@ -65,7 +66,7 @@ TEST(Controller, SkipJumpsToTheEndAndReplayStartsOver) {
     c.replay();
     EXPECT_TRUE(c.moving());
     EXPECT_EQ(c.shot_serial(), serial + 1);
-    EXPECT_DOUBLE_EQ(c.playback().time(), 0.0);
+    EXPECT_DOUBLE_EQ(c.playback().time(), -app::stroke_lead);
     run_until_idle(c);
     const auto again = c.balls_now();
     ASSERT_EQ(after.size(), again.size());
