@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <exception>
 
 #include "app/app.hpp"
 #include "app/settings.hpp"
@@ -59,5 +60,10 @@ int main(int argc, char** argv) {
             }
         o.players = p;
     }
-    return o.screenshot ? app::run_screenshot(o) : app::run_window(o);
+    try {
+        return o.screenshot ? app::run_screenshot(o) : app::run_window(o);
+    } catch (const std::exception& e) {  // e.g. a missing font package, a GL resource failure
+        std::fprintf(stderr, "coolaaber: %s\n", e.what());
+        return 1;
+    }
 }
