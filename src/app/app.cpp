@@ -150,6 +150,35 @@ struct Table {
 
 bool key_shift() { return (SDL_GetModState() & KMOD_SHIFT) != 0; }
 
+// The keyboard at the table (docs/app.md, "Playing").
+void on_key(Table& t, SDL_Window* window, SDL_Keycode key, bool shift) {
+    switch (key) {
+        case SDLK_LEFT: t.controller.turn_aim(shift ? 0.05 : 0.5); break;
+        case SDLK_RIGHT: t.controller.turn_aim(shift ? -0.05 : -0.5); break;
+        case SDLK_UP: t.set_power(t.controller.aim().power + 0.05); break;
+        case SDLK_DOWN: t.set_power(t.controller.aim().power - 0.05); break;
+        case SDLK_SPACE: t.controller.strike(); break;
+        case SDLK_v: t.change_view(); break;
+        case SDLK_s:
+        case SDLK_RETURN: t.controller.skip(); break;
+        case SDLK_p: t.controller.replay(); break;
+        case SDLK_h: t.controller.hint(); break;
+        case SDLK_g: t.setup.settings.aim_guide = !t.setup.settings.aim_guide; break;
+        case SDLK_o:
+            t.rig.set_mode(t.rig.mode() == CameraMode::free ? CameraMode::overhead : CameraMode::free, t.last_camera);
+            break;
+        case SDLK_r: t.panel.confirm_restart = true; break;
+        case SDLK_ESCAPE: t.panel.menu = true; break;
+        case SDLK_F11: {
+            const bool full = (SDL_GetWindowFlags(window) & SDL_WINDOW_FULLSCREEN_DESKTOP) != 0;
+            SDL_SetWindowFullscreen(window, full ? 0 : SDL_WINDOW_FULLSCREEN_DESKTOP);
+            t.setup.settings.fullscreen = !full;
+            break;
+        }
+        default: break;
+    }
+}
+
 // The game to start, or empty (the reason on stderr) when a --load file is bad.
 std::optional<GameSetup> set_up_or_report(const AppOptions& options) {
     try {
@@ -266,34 +295,9 @@ int run_window(const AppOptions& options) {
                     case SDL_MOUSEWHEEL:
                         if (!over_panel(mouse_x)) input.wheel(static_cast<float>(e.wheel.y));
                         break;
-                    case SDL_KEYDOWN: {
-                        if (ImGui::GetIO().WantTextInput) break;
-                        const bool shift = key_shift();
-                        switch (e.key.keysym.sym) {
-                            case SDLK_LEFT: t.controller.turn_aim(shift ? 0.05 : 0.5); break;
-                            case SDLK_RIGHT: t.controller.turn_aim(shift ? -0.05 : -0.5); break;
-                            case SDLK_UP: t.set_power(t.controller.aim().power + 0.05); break;
-                            case SDLK_DOWN: t.set_power(t.controller.aim().power - 0.05); break;
-                            case SDLK_SPACE: t.controller.strike(); break;
-                            case SDLK_v: t.change_view(); break;
-                            case SDLK_s:
-                            case SDLK_RETURN: t.controller.skip(); break;
-                            case SDLK_p: t.controller.replay(); break;
-                            case SDLK_h: t.controller.hint(); break;
-                            case SDLK_g: t.setup.settings.aim_guide = !t.setup.settings.aim_guide; break;
-                            case SDLK_o: t.rig.set_mode(t.rig.mode() == CameraMode::free ? CameraMode::overhead : CameraMode::free, t.last_camera); break;
-                            case SDLK_r: t.panel.confirm_restart = true; break;
-                            case SDLK_ESCAPE: t.panel.menu = true; break;
-                            case SDLK_F11: {
-                                const bool full = (SDL_GetWindowFlags(window) & SDL_WINDOW_FULLSCREEN_DESKTOP) != 0;
-                                SDL_SetWindowFullscreen(window, full ? 0 : SDL_WINDOW_FULLSCREEN_DESKTOP);
-                                t.setup.settings.fullscreen = !full;
-                                break;
-                            }
-                            default: break;
-                        }
+                    case SDL_KEYDOWN:
+                        if (!ImGui::GetIO().WantTextInput) on_key(t, window, e.key.keysym.sym, key_shift());
                         break;
-                    }
                     case SDL_WINDOWEVENT:
                         if (e.window.event == SDL_WINDOWEVENT_SIZE_CHANGED &&
                             !(SDL_GetWindowFlags(window) & SDL_WINDOW_FULLSCREEN_DESKTOP)) {
