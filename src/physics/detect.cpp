@@ -15,6 +15,54 @@ constexpr double kPushAccel = -1e-12;
 
 Vec2 position(const motion::Kinematics& k, double t) { return k.p + t * k.v + (0.5 * t * t) * k.a; }
 
+/// Smallest value of q(τ) = a0 + a1·τ + a2·τ² on [0, h] (h finite), in closed form.
+double min_on(double a0, double a1, double a2, double h) {
+    const double end = a0 + (a1 + a2 * h) * h;
+    double m = a0 < end ? a0 : end;
+    if (a2 > 0.0 && a1 < 0.0 && -a1 < 2.0 * a2 * h) {
+        const double vertex = a0 - a1 * a1 / (4.0 * a2);
+        if (vertex < m) m = vertex;
+    }
+    return m;
+}
+
+/// Clearance kept by the pruning bounds below (unit: m), far above any rounding in them.
+constexpr double kClear = 1e-6;
+
+/// True if q(τ) = a0 + a1·τ + a2·τ² provably stays positive on [0, h] by far more than the
+/// rounding of evaluating it: then the root solver, whose every decision is the sign of q
+/// evaluated at a point of [0, h] (with values below γ·Σ|a_i|τ^i counted as 0), can find no
+/// crossing, and returns +infinity; this returns the same without running it.
+bool quadratic_stays_positive(double a0, double a1, double a2, double h) {
+    if (!std::isfinite(h) || !(h >= 0.0)) return false;
+    const double size = std::fabs(a0) + (std::fabs(a1) + std::fabs(a2) * h) * h;
+    return std::isfinite(size) && min_on(a0, a1, a2, h) > 1e-12 * size + 1e-300;
+}
+
+/// True if |Δp + Δv·τ + ½Δa·τ²| provably stays above D + kClear for all τ in [0, h], by two
+/// lower bounds on the distance: its projection on Δp (|x| ≥ x·u/|u|) and on Δv's normal (the
+/// velocity term vanishes there). Then the exact contact quartic is ≥ 2·D·kClear on [0, h], far
+/// above the rounding of its computed coefficients and of any evaluation of it (both below
+/// ~64ε·(|Δp| + |Δv|h + ½|Δa|h²)², checked), so the solver sees only positive values and finds no
+/// crossing: skipping it returns exactly what it would. Only ever true for a pair not touching.
+bool surely_apart(Vec2 dp, Vec2 dv, Vec2 da, double dist, double D, double h) {
+    if (!std::isfinite(h) || !(h >= 0.0) || !(D > 0.0)) return false;
+    const double h2 = h * h;
+    const double K = norm2(dp) + norm2(dv) * h2 + 0.25 * norm2(da) * (h2 * h2);
+    // (|Δp| + |Δv|h + ½|Δa|h²)² ≤ 3K; this also keeps the bounds' own rounding (~8ε·|u|·√(3K))
+    // below kClear·|u|, which the extra kClear in `clear` absorbs.
+    if (!(1e-12 * (3.0 * K + D * D) < 2.0 * D * kClear)) return false;
+    const double clear = D + 2.0 * kClear;
+    if (min_on(norm2(dp), dot(dp, dv), 0.5 * dot(dp, da), h) > clear * dist) return true;
+    const Vec2 w = perp(dv);
+    double wp = dot(w, dp), wa = 0.5 * dot(w, da);
+    if (wp < 0.0) {
+        wp = -wp;
+        wa = -wa;
+    }
+    return wp + (wa < 0.0 ? wa * h2 : 0.0) > clear * norm(dv);
+}
+
 /// Contact of a moving point with a fixed or moving circle of radius D about another point:
 /// f(τ) = |Δp + Δv·τ + ½Δa·τ²|² − D², a quartic.
 Prediction circle_contact(Vec2 dp, Vec2 dv, Vec2 da, double D, double reach, double horizon) {
@@ -29,6 +77,7 @@ Prediction circle_contact(Vec2 dp, Vec2 dv, Vec2 da, double D, double reach, dou
         if (rate <= kApproachEps && accel < kPushAccel && rate < -0.5 * accel * horizon)
             return {0.0, true};
     }
+    if (dist - D > 4.0 * kClear && surely_apart(dp, dv, da, dist, D, horizon)) return {};
     const roots::Poly4 c{dot(dp, dp) - D * D, 2.0 * dot(dp, dv), dot(dv, dv) + dot(dp, da),
                          dot(dv, da), 0.25 * dot(da, da)};
     return {roots::first_downward_crossing(c, 0.0, horizon), false};
@@ -84,6 +133,7 @@ Prediction line(const Mover& m, const CushionLine& l, double R) {
         if (s1 < -kApproachEps) return {0.0, false};
         if (s1 <= kApproachEps && s2 < kPushAccel && s1 < -0.5 * s2 * m.horizon) return {0.0, true};
     }
+    if (quadratic_stays_positive(s0, s1, 0.5 * s2, m.horizon)) return {};
     const double t = roots::first_downward_crossing({s0, s1, 0.5 * s2, 0.0, 0.0}, 0.0, m.horizon);
     if (std::isinf(t) || !within(t)) return {};
     return {t, false};
@@ -95,6 +145,7 @@ double drop(const Mover& m, const Pocket& pk, double lateral) {
     const double d0 = dot(m.k.p - pk.drop_point, pk.inward);
     if (-d0 > m.reach) return kInf;
     const double d1 = dot(m.k.v, pk.inward), d2 = dot(m.k.a, pk.inward);
+    if (d0 < 0.0 && quadratic_stays_positive(-d0, -d1, -0.5 * d2, m.horizon)) return kInf;
     double t = d0 >= 0.0 ? 0.0
                          : roots::first_downward_crossing({-d0, -d1, -0.5 * d2, 0.0, 0.0}, 0.0,
                                                           m.horizon);
