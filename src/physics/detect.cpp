@@ -89,19 +89,6 @@ Mover Mover::within(double h) const {
     return h >= horizon ? *this : make_mover(k, h, decelerating);
 }
 
-double reach_bound(double speed, double accel, double horizon, bool decelerating) {
-    double reach;
-    if (std::isinf(horizon)) {
-        reach = (speed == 0 && accel == 0) ? 0.0 : kInf;
-    } else if (decelerating && accel > 0) {
-        const double h = std::min(horizon, speed / accel);  // it stops, then stays
-        reach = speed * h - 0.5 * accel * h * h;
-    } else {
-        reach = speed * horizon + 0.5 * accel * horizon * horizon;
-    }
-    return std::max(0.0, reach) * (1.0 + 1e-9) + 1e-12;
-}
-
 Mover make_mover(const motion::Kinematics& k, double horizon, bool decelerating_along_velocity) {
     return {k, horizon, reach_bound(norm(k.v), norm(k.a), horizon, decelerating_along_velocity),
             decelerating_along_velocity};

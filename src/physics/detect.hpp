@@ -3,6 +3,8 @@
 // degree ≤ 4 in the time from now. Private to physics.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "physics/motion.hpp"
@@ -31,7 +33,19 @@ Mover make_mover(const motion::Kinematics& k, double horizon, bool decelerating_
 
 /// Bound on the distance a ball with speed ≤ `speed` and acceleration of size `accel` travels
 /// within `horizon` (decelerating: accel opposes the velocity, so it stops).
-double reach_bound(double speed, double accel, double horizon, bool decelerating);
+/// (Inline: the event loop calls it twice per ball pair.)
+inline double reach_bound(double speed, double accel, double horizon, bool decelerating) {
+    double reach;
+    if (std::isinf(horizon)) {
+        reach = (speed == 0 && accel == 0) ? 0.0 : std::numeric_limits<double>::infinity();
+    } else if (decelerating && accel > 0) {
+        const double h = std::min(horizon, speed / accel);  // it stops, then stays
+        reach = speed * h - 0.5 * accel * h * h;
+    } else {
+        reach = speed * horizon + 0.5 * accel * horizon * horizon;
+    }
+    return std::max(0.0, reach) * (1.0 + 1e-9) + 1e-12;
+}
 
 /// A predicted contact: `tau` seconds from now (infinity: none). `pushing`: the contact is now,
 /// with no approach speed but an acceleration into it.
