@@ -111,6 +111,12 @@ Prediction line(const Mover& m, const CushionLine& l, double R) {
     // Signed gap between the ball's surface and the face: s(τ) = s0 + s1·τ + ½·s2·τ².
     const double s0 = dot(m.k.p - l.a, l.normal) - R;
     if (s0 > m.reach) return {};
+    // The contact point must lie on the face: a ball that cannot get within the face's length
+    // (its reach bounds how far `along` moves; 1e-9 m is far above the rounding of within())
+    // fails within() at every root the solver could return, so the answer is none.
+    const double along0 = dot(m.k.p - l.a, l.dir);
+    const double slack = m.reach * (1.0 + 1e-9) + 1e-9;
+    if (along0 + slack < 0.0 || along0 - slack > l.length) return {};
     const double s1 = dot(m.k.v, l.normal), s2 = dot(m.k.a, l.normal);
     auto within = [&](double t) {
         const double along = dot(position(m.k, t) - l.a, l.dir);
@@ -131,6 +137,11 @@ double drop(const Mover& m, const Pocket& pk, double lateral) {
     // Depth past the drop line, d(τ); the ball falls when d crosses 0 upward.
     const double d0 = dot(m.k.p - pk.drop_point, pk.inward);
     if (-d0 > m.reach) return kInf;
+    // Too far from the pocket's axis at every point it can reach: the lateral test below fails
+    // at any crossing (1e-9 m is far above its rounding).
+    if (std::fabs(cross(pk.inward, m.k.p - pk.drop_point)) - (m.reach * (1.0 + 1e-9) + 1e-9) >
+        lateral)
+        return kInf;
     const double d1 = dot(m.k.v, pk.inward), d2 = dot(m.k.a, pk.inward);
     if (d0 < 0.0 && quadratic_stays_positive(-d0, -d1, -0.5 * d2, m.horizon)) return kInf;
     double t = d0 >= 0.0 ? 0.0
