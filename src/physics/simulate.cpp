@@ -159,21 +159,47 @@ private:
 
     // ---- detect ----
 
+    /// The first of all candidates (own and pair) in the total order, or Candidate{} if none
+    /// is before it: the first of the per-ball firsts, which predict_for keeps up to date.
     Candidate earliest() const {
         Candidate best;
-        for (std::size_t i = 0; i < n_; ++i) {
-            if (own_[i].before(best)) best = own_[i];
-            for (std::size_t j = i + 1; j < n_; ++j)
-                if (pair_[i][j].before(best)) best = pair_[i][j];
-        }
+        for (std::size_t i = 0; i < n_; ++i)
+            if (first_[i].before(best)) best = first_[i];
         return best;
+    }
+
+    /// The first of ball k's own candidate and all its pairs.
+    Candidate first_of(std::size_t k) {
+        Candidate best = own_[k];
+        for (std::size_t j = 0; j < n_; ++j)
+            if (j != k && pair(k, j).before(best)) best = pair(k, j);
+        return best;
+    }
+
+    /// Re-predicts everything that involves ball i (see predict_candidates), then brings the
+    /// per-ball firsts up to date: ball i's afresh; another ball j's only where its pair with i
+    /// changed its first (it was that pair, or the new pair comes before it).
+    void predict_for(std::size_t i, std::uint32_t later = 0) {
+        predict_candidates(i, later);
+        first_[i] = first_of(i);
+        for (std::size_t j = 0; j < n_; ++j) {
+            if (j == i) continue;
+            const Candidate& f = first_[j];
+            const auto [lo, hi] = std::minmax(i, j);
+            if (f.kind == Kind::ball_ball && f.a == static_cast<int>(lo) &&
+                f.b == static_cast<int>(hi)) {
+                first_[j] = first_of(j);
+            } else if (pair(i, j).before(f)) {
+                first_[j] = pair(i, j);
+            }
+        }
     }
 
     /// Re-predicts everything that involves ball i: its own next event, and its pairs. The
     /// pairs with the balls in `later` (a bit per ball) are only cleared: the caller
     /// re-predicts those balls next, which predicts those pairs again (with their new own
     /// events), so a prediction here would be overwritten unread.
-    void predict_for(std::size_t i, std::uint32_t later = 0) {
+    void predict_candidates(std::size_t i, std::uint32_t later) {
         const int ii = static_cast<int>(i);
         own_[i] = Candidate{};
         for (std::size_t j = 0; j < n_; ++j)
@@ -352,6 +378,8 @@ private:
     std::vector<Event> events_;
     std::array<Live, kMaxBalls> live_{};
     std::array<Candidate, kMaxBalls> own_{};
+    /// Per ball k, the first of own_[k] and every pair of k (kept by predict_for).
+    std::array<Candidate, kMaxBalls> first_{};
     static constexpr int kJamContacts = 16;
     double jam_time_ = -1.0;
     std::array<int, kMaxBalls> jam_count_{};
