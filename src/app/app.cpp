@@ -352,10 +352,13 @@ int run_window(const AppOptions& options) {
             t.apply(actions);
             if (!mouse_down[0] && !mouse_down[1] && !mouse_down[2]) t.persist_settings();  // not mid-drag
             const float aspect = static_cast<float>(painter.view_width()) / static_cast<float>(painter.height());
+            const render::Camera previous = t.last_camera;
             t.last_camera = t.camera(aspect);
+            const bool camera_moving = t.rig.animating() || previous.eye != t.last_camera.eye ||
+                                       previous.target != t.last_camera.target;
             sound.set_listener(listener_of(t.last_camera));
             const SceneFrame scene = build_scene(t.controller, t.setup.settings.aim_guide, input.dragged_to());
-            painter.draw_table(scene, t.last_camera);
+            painter.draw_table(scene, t.last_camera, camera_moving);
             painter.show(ImGui::GetDrawData());
             SDL_GL_SwapWindow(window);
             ++frames;

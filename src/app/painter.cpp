@@ -19,15 +19,18 @@ void Painter::resize(int width, int height) {
     width_ = width;
     height_ = height;
     view_ = std::make_unique<render::OffscreenTarget>(view_width(), height_, 4);
+    moving_.reset();
     picture_.reset();
 }
 
 int Painter::view_width() const { return std::max(16, width_ - static_cast<int>(panel_width)); }
 
-void Painter::draw_table(const SceneFrame& scene, const render::Camera& camera) {
-    view_->bind();
+void Painter::draw_table(const SceneFrame& scene, const render::Camera& camera, bool camera_moving) {
+    if (camera_moving && !moving_) moving_ = std::make_unique<render::OffscreenTarget>(view_width(), height_, 1);
+    render::OffscreenTarget& target = camera_moving ? *moving_ : *view_;
+    target.bind();
     renderer_.draw(scene.view(camera), view_width(), height_);
-    view_->resolve();  // leaves the resolved table image bound for reading
+    target.resolve();  // leaves the resolved table image bound for reading
 }
 
 void Painter::compose(unsigned table_image, ImDrawData* panel) const {
