@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "physics/motion.hpp"
+#include "physics/roots.hpp"
 #include "physics/table.hpp"
 
 namespace physics::detect {
@@ -21,15 +22,16 @@ inline constexpr double kApproachEps = 1e-12;
 /// A ball's motion from now on, up to a horizon: kinematics now, and how far it can get.
 struct Mover {
     motion::Kinematics k;
-    double horizon = 0.0;  ///< how far ahead to look (unit: s); may be infinite
-    double reach = 0.0;    ///< bound on the distance travelled within the horizon (unit: m)
+    double horizon = 0.0;       ///< how far ahead to look (unit: s); may be infinite
+    double reach = 0.0;         ///< bound on the distance travelled within the horizon (unit: m)
     bool decelerating = false;  ///< acceleration opposes velocity (rolling): a tighter bound
 
     /// The same motion looked at only up to `h`.
     Mover within(double h) const;
 };
 
-Mover make_mover(const motion::Kinematics& k, double horizon, bool decelerating_along_velocity);
+inline Mover make_mover(const motion::Kinematics& k, double horizon,
+                        bool decelerating_along_velocity);
 
 /// Bound on the distance a ball with speed ≤ `speed` and acceleration of size `accel` travels
 /// within `horizon` (decelerating: accel opposes the velocity, so it stops).
@@ -54,10 +56,164 @@ struct Prediction {
     bool pushing = false;
 };
 
-Prediction ball_ball(const Mover& a, const Mover& b, double R, double horizon);
-Prediction line(const Mover& m, const CushionLine& l, double R);
-Prediction nose(const Mover& m, const JawNose& n, double R);
+inline Prediction ball_ball(const Mover& a, const Mover& b, double R, double horizon);
+inline Prediction line(const Mover& m, const CushionLine& l, double R);
+inline Prediction nose(const Mover& m, const JawNose& n, double R);
 /// Crossing of a pocket's drop line, within `lateral` of the pocket's axis.
-double drop(const Mover& m, const Pocket& pk, double lateral);
+inline double drop(const Mover& m, const Pocket& pk, double lateral);
+
+// ---- definitions (inline: the event loop calls these ~10,000 times per break) ----
+
+namespace detail {
+
+inline constexpr double kInf = std::numeric_limits<double>::infinity();
+/// Normal accelerations below this are into contact (unit: m/s²).
+inline constexpr double kPushAccel = -1e-12;
+
+inline Vec2 position(const motion::Kinematics& k, double t) {
+    return k.p + t * k.v + (0.5 * t * t) * k.a;
+}
+
+/// Smallest value of q(τ) = a0 + a1·τ + a2·τ² on [0, h] (h finite), in closed form.
+inline double min_on(double a0, double a1, double a2, double h) {
+    const double end = a0 + (a1 + a2 * h) * h;
+    double m = a0 < end ? a0 : end;
+    if (a2 > 0.0 && a1 < 0.0 && -a1 < 2.0 * a2 * h) {
+        const double vertex = a0 - a1 * a1 / (4.0 * a2);
+        if (vertex < m) m = vertex;
+    }
+    return m;
+}
+
+/// Clearance kept by the pruning bounds below (unit: m), far above any rounding in them.
+inline constexpr double kClear = 1e-6;
+
+/// True if q(τ) = a0 + a1·τ + a2·τ² provably stays positive on [0, h] by far more than the
+/// rounding of evaluating it: then the root solver, whose every decision is the sign of q
+/// evaluated at a point of [0, h] (with values below γ·Σ|a_i|τ^i counted as 0), can find no
+/// crossing, and returns +infinity; this returns the same without running it.
+inline bool quadratic_stays_positive(double a0, double a1, double a2, double h) {
+    if (!std::isfinite(h) || !(h >= 0.0)) return false;
+    const double size = std::fabs(a0) + (std::fabs(a1) + std::fabs(a2) * h) * h;
+    return std::isfinite(size) && min_on(a0, a1, a2, h) > 1e-12 * size + 1e-300;
+}
+
+/// True if |Δp + Δv·τ + ½Δa·τ²| provably stays above D + kClear for all τ in [0, h], by two
+/// lower bounds on the distance: its projection on Δp (|x| ≥ x·u/|u|) and on Δv's normal (the
+/// velocity term vanishes there). Then the exact contact quartic is ≥ 2·D·kClear on [0, h], far
+/// above the rounding of its computed coefficients and of any evaluation of it (both below
+/// ~64ε·(|Δp| + |Δv|h + ½|Δa|h²)², checked), so the solver sees only positive values and finds no
+/// crossing: skipping it returns exactly what it would. Only ever true for a pair not touching.
+inline bool surely_apart(Vec2 dp, Vec2 dv, Vec2 da, double dist, double D, double h) {
+    if (!std::isfinite(h) || !(h >= 0.0) || !(D > 0.0)) return false;
+    const double h2 = h * h;
+    const double K = norm2(dp) + norm2(dv) * h2 + 0.25 * norm2(da) * (h2 * h2);
+    // (|Δp| + |Δv|h + ½|Δa|h²)² ≤ 3K; this also keeps the bounds' own rounding (~8ε·|u|·√(3K))
+    // below kClear·|u|, which the extra kClear in `clear` absorbs.
+    if (!(1e-12 * (3.0 * K + D * D) < 2.0 * D * kClear)) return false;
+    const double clear = D + 2.0 * kClear;
+    if (min_on(norm2(dp), dot(dp, dv), 0.5 * dot(dp, da), h) > clear * dist) return true;
+    const Vec2 w = perp(dv);
+    double wp = dot(w, dp), wa = 0.5 * dot(w, da);
+    if (wp < 0.0) {
+        wp = -wp;
+        wa = -wa;
+    }
+    return wp + (wa < 0.0 ? wa * h2 : 0.0) > clear * norm(dv);
+}
+
+/// Contact of a moving point with a fixed or moving circle of radius D about another point:
+/// f(τ) = |Δp + Δv·τ + ½Δa·τ²|² − D², a quartic.
+inline Prediction circle_contact(Vec2 dp, Vec2 dv, Vec2 da, double D, double reach,
+                                 double horizon) {
+    const double dist = norm(dp);
+    if (dist - D > reach) return {};
+    if (dist - D <= kTouchGap && dist > 0) {
+        const double rate = dot(dp, dv) / dist;  // d|Δp|/dt, negative when approaching
+        if (rate < -kApproachEps) return {0.0, false};
+        // Pushing: no normal speed, and the gap closes within the horizon under the contact's
+        // acceleration (d²|Δp|/dt² ≈ curvature / |Δp|).
+        const double accel = (norm2(dv) + dot(dp, da)) / dist;
+        if (rate <= kApproachEps && accel < kPushAccel && rate < -0.5 * accel * horizon)
+            return {0.0, true};
+    }
+    if (dist - D > 4.0 * kClear && surely_apart(dp, dv, da, dist, D, horizon)) return {};
+    const roots::Poly4 c{dot(dp, dp) - D * D, 2.0 * dot(dp, dv), dot(dv, dv) + dot(dp, da),
+                         dot(dv, da), 0.25 * dot(da, da)};
+    return {roots::first_downward_crossing(c, 0.0, horizon), false};
+}
+
+}  // namespace detail
+
+inline Mover Mover::within(double h) const {
+    return h >= horizon ? *this : make_mover(k, h, decelerating);
+}
+
+inline Mover make_mover(const motion::Kinematics& k, double horizon,
+                        bool decelerating_along_velocity) {
+    return {k, horizon, reach_bound(norm(k.v), norm(k.a), horizon, decelerating_along_velocity),
+            decelerating_along_velocity};
+}
+
+inline Prediction ball_ball(const Mover& a, const Mover& b, double R, double horizon) {
+    if (a.reach == 0 && b.reach == 0) return {};
+    return detail::circle_contact(b.k.p - a.k.p, b.k.v - a.k.v, b.k.a - a.k.a, 2.0 * R,
+                                  a.reach + b.reach, horizon);
+}
+
+inline Prediction nose(const Mover& m, const JawNose& n, double R) {
+    if (m.reach == 0) return {};
+    return detail::circle_contact(n.centre - m.k.p, -1.0 * m.k.v, -1.0 * m.k.a, R + n.radius,
+                                  m.reach, m.horizon);
+}
+
+inline Prediction line(const Mover& m, const CushionLine& l, double R) {
+    if (m.reach == 0) return {};
+    // Signed gap between the ball's surface and the face: s(τ) = s0 + s1·τ + ½·s2·τ².
+    const double s0 = dot(m.k.p - l.a, l.normal) - R;
+    if (s0 > m.reach) return {};
+    // The contact point must lie on the face: a ball that cannot get within the face's length
+    // (its reach bounds how far `along` moves; 1e-9 m is far above the rounding of within())
+    // fails within() at every root the solver could return, so the answer is none.
+    const double along0 = dot(m.k.p - l.a, l.dir);
+    const double slack = m.reach * (1.0 + 1e-9) + 1e-9;
+    if (along0 + slack < 0.0 || along0 - slack > l.length) return {};
+    const double s1 = dot(m.k.v, l.normal), s2 = dot(m.k.a, l.normal);
+    auto within = [&](double t) {
+        const double along = dot(detail::position(m.k, t) - l.a, l.dir);
+        return along >= 0.0 && along <= l.length;
+    };
+    if (s0 <= kTouchGap && s0 >= -1e-6 && within(0.0)) {
+        if (s1 < -kApproachEps) return {0.0, false};
+        if (s1 <= kApproachEps && s2 < detail::kPushAccel && s1 < -0.5 * s2 * m.horizon)
+            return {0.0, true};
+    }
+    if (detail::quadratic_stays_positive(s0, s1, 0.5 * s2, m.horizon)) return {};
+    const double t = roots::first_downward_crossing({s0, s1, 0.5 * s2, 0.0, 0.0}, 0.0, m.horizon);
+    if (std::isinf(t) || !within(t)) return {};
+    return {t, false};
+}
+
+inline double drop(const Mover& m, const Pocket& pk, double lateral) {
+    if (m.reach == 0) return detail::kInf;
+    // Depth past the drop line, d(τ); the ball falls when d crosses 0 upward.
+    const double d0 = dot(m.k.p - pk.drop_point, pk.inward);
+    if (-d0 > m.reach) return detail::kInf;
+    // Too far from the pocket's axis at every point it can reach: the lateral test below fails
+    // at any crossing (1e-9 m is far above its rounding).
+    if (std::fabs(cross(pk.inward, m.k.p - pk.drop_point)) - (m.reach * (1.0 + 1e-9) + 1e-9) >
+        lateral)
+        return detail::kInf;
+    const double d1 = dot(m.k.v, pk.inward), d2 = dot(m.k.a, pk.inward);
+    if (d0 < 0.0 && detail::quadratic_stays_positive(-d0, -d1, -0.5 * d2, m.horizon))
+        return detail::kInf;
+    double t =
+        d0 >= 0.0 ? 0.0
+                  : roots::first_downward_crossing({-d0, -d1, -0.5 * d2, 0.0, 0.0}, 0.0, m.horizon);
+    if (std::isinf(t)) return detail::kInf;
+    if (std::fabs(cross(pk.inward, detail::position(m.k, t) - pk.drop_point)) > lateral)
+        return detail::kInf;
+    return t;
+}
 
 }  // namespace physics::detect
