@@ -24,6 +24,25 @@ std::vector<BallView> views_at(const physics::Shot& shot, double t, double radiu
     return out;
 }
 
+// The cue ball (the scene's first ball) aimed full at the apex ball on the foot spot: the cue
+// (elevation, pull-back in m) and the aim guide; returns the heading (unit: rad).
+float aim_at_apex(DemoScene& s, float elevation, float pull_back) {
+    const BallView& cue = s.balls.front();
+    const glm::vec2 c{cue.centre.x, cue.centre.y};
+    const physics::Vec2 foot = s.table.foot_spot();
+    const glm::vec2 apex{static_cast<float>(foot.x), static_cast<float>(foot.y)};
+    const glm::vec2 d = glm::normalize(apex - c);
+    const float heading = std::atan2(d.y, d.x);
+    s.cue = CueView{c, heading, elevation, pull_back};
+    const float R = static_cast<float>(s.ball_radius);
+    const glm::vec2 ghost = apex - 2.0f * R * d;
+    s.aim.cue_path = {c, ghost};
+    s.aim.ghost = ghost;
+    s.aim.object_path = {apex, apex + 0.4f * d};
+    s.show_aim = true;
+    return heading;
+}
+
 }  // namespace
 
 DemoScene racked_scene(float aspect) {
@@ -82,20 +101,9 @@ DemoScene mid_roll_scene(float aspect, double t) {
 
 DemoScene cue_view_scene(float aspect) {
     DemoScene s = racked_scene(aspect);
+    const float heading = aim_at_apex(s, 0.08f, 0.06f);
     const BallView& cue = s.balls.front();
-    const glm::vec2 c{cue.centre.x, cue.centre.y};
-    const physics::Vec2 foot = s.table.foot_spot();
-    const glm::vec2 apex{static_cast<float>(foot.x), static_cast<float>(foot.y)};
-    const glm::vec2 d = glm::normalize(apex - c);
-    const float heading = std::atan2(d.y, d.x);
-    s.cue = CueView{c, heading, 0.08f, 0.06f};
-    s.camera = cue_ball_camera(c, heading);
-    const float R = static_cast<float>(s.ball_radius);
-    const glm::vec2 ghost = apex - 2.0f * R * d;
-    s.aim.cue_path = {c, ghost};
-    s.aim.ghost = ghost;
-    s.aim.object_path = {apex, apex + 0.4f * d};
-    s.show_aim = true;
+    s.camera = cue_ball_camera({cue.centre.x, cue.centre.y}, heading);
     return s;
 }
 
@@ -105,17 +113,7 @@ DemoScene aim_overhead_scene(float aspect) {
     BallView& cue = s.balls.front();
     const float L = static_cast<float>(s.table.length()), W = static_cast<float>(s.table.width());
     cue.centre = {0.3f * L, 0.22f * W, cue.centre.z};
-    const glm::vec2 c{cue.centre.x, cue.centre.y};
-    const physics::Vec2 foot = s.table.foot_spot();
-    const glm::vec2 apex{static_cast<float>(foot.x), static_cast<float>(foot.y)};
-    const glm::vec2 d = glm::normalize(apex - c);
-    s.cue = CueView{c, std::atan2(d.y, d.x), 0.10f, 0.10f};
-    const float R = static_cast<float>(s.ball_radius);
-    const glm::vec2 ghost = apex - 2.0f * R * d;
-    s.aim.cue_path = {c, ghost};
-    s.aim.ghost = ghost;
-    s.aim.object_path = {apex, apex + 0.4f * d};
-    s.show_aim = true;
+    aim_at_apex(s, 0.10f, 0.10f);
     return s;
 }
 

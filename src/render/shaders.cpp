@@ -60,6 +60,33 @@ const char* const kCommon = R"(
 // Lamps over the table: position (unit: m) and radius of the shade's opening in w.
 uniform vec4 u_lamps[3];
 uniform vec3 u_lamp_colour;
+
+// A ball's soft shadow at point p (normal n): the light that still reaches p, as a factor.
+// Per lamp, the fraction of the lamp's disc that the ball's disc covers as seen from p,
+// weighted by that lamp's share of the light there; and the ambient occlusion of a sphere,
+// (R/d)^2 cos(theta). Used on the cloth (n = z) and on the cushions.
+float ball_shadow_keep(vec3 p, vec3 n, vec3 centre, float radius) {
+    vec3 to_ball = centre - p;
+    float db = length(to_ball);
+    vec3 bdir = to_ball / db;
+    float ab = asin(min(radius / db, 1.0));
+    float lit = 0.0, shadowed = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        vec3 d = u_lamps[i].xyz - p;
+        float dl = length(d);
+        vec3 ldir = d / dl;
+        float w = smoothstep(0.25, 0.6, ldir.z) * max(dot(n, ldir), 0.0) / (dl * dl);
+        float al = asin(min(u_lamps[i].w / dl, 1.0));
+        float sep = acos(clamp(dot(ldir, bdir), -1.0, 1.0));
+        float cover = 1.0 - smoothstep(abs(ab - al), ab + al, sep);
+        cover *= min(1.0, (ab * ab) / (al * al));
+        lit += w;
+        shadowed += w * cover;
+    }
+    float ambient = 0.035;
+    float ao = (radius * radius) / (db * db) * max(dot(n, bdir), 0.0);
+    return (lit - shadowed + ambient * (1.0 - ao)) / (lit + ambient);
+}
 uniform vec3 u_eye;
 uniform float u_exposure;
 uniform vec3 u_background;   // linear
@@ -436,43 +463,20 @@ void main() {
 }
 )";
 
-// Soft shadow of one ball on the cloth, computed analytically: for each lamp, the fraction of
-// the lamp's disc that the ball's disc covers as seen from the cloth point, weighted by that
-// lamp's share of the light there; and the ambient occlusion of a sphere above a plane,
-// (R/d)^2 cos(theta). The output multiplies the framebuffer.
+// Soft shadow of one ball on the cloth, computed analytically (kCommon's ball_shadow_keep
+// with the cloth's normal). The output multiplies the framebuffer.
 const char* const kShadowFrag = R"(
 in vec3 v_world;
 layout(location = 0) out vec4 o_colour;
 uniform vec3 u_centre;
 uniform float u_radius;
 void main() {
-    vec3 p = vec3(v_world.xy, 0.0);
-    vec3 to_ball = u_centre - p;
-    float db = length(to_ball);
-    vec3 bdir = to_ball / db;
-    float ab = asin(min(u_radius / db, 1.0));
-    float lit = 0.0, shadowed = 0.0;
-    for (int i = 0; i < 3; ++i) {
-        vec3 d = u_lamps[i].xyz - p;
-        float dl = length(d);
-        vec3 ldir = d / dl;
-        float w = smoothstep(0.25, 0.6, ldir.z) * ldir.z / (dl * dl);
-        float al = asin(min(u_lamps[i].w / dl, 1.0));
-        float sep = acos(clamp(dot(ldir, bdir), -1.0, 1.0));
-        float cover = 1.0 - smoothstep(abs(ab - al), ab + al, sep);
-        cover *= min(1.0, (ab * ab) / (al * al));
-        lit += w;
-        shadowed += w * cover;
-    }
-    float ambient = 0.035;
-    float ao = (u_radius * u_radius) / (db * db) * max(bdir.z, 0.0);
-    float keep = (lit - shadowed + ambient * (1.0 - ao)) / (lit + ambient);
-    o_colour = vec4(vec3(keep), 1.0);
+    o_colour = vec4(vec3(ball_shadow_keep(vec3(v_world.xy, 0.0), vec3(0.0, 0.0, 1.0), u_centre, u_radius)), 1.0);
 }
 )";
 
-// The balls' soft shadows on the cushions: kShadowFrag's lamp-disc coverage and sphere
-// occlusion, at the cushion's own surface point and normal, for the balls near a cushion
+// The balls' soft shadows on the cushions: ball_shadow_keep at the cushion's own surface
+// point and normal, for the balls near a cushion
 // (drawn over the cushions' mesh with kTableVert, multiplied onto the framebuffer).
 const char* const kCushionShadowFrag = R"(
 in vec3 v_pos;
@@ -488,26 +492,7 @@ void main() {
     float keep = 1.0;
     for (int b = 0; b < 16; ++b) {
         if (b >= u_ball_count) break;
-        vec3 to_ball = u_balls[b] - v_pos;
-        float db = length(to_ball);
-        vec3 bdir = to_ball / db;
-        float ab = asin(min(u_radius / db, 1.0));
-        float lit = 0.0, shadowed = 0.0;
-        for (int i = 0; i < 3; ++i) {
-            vec3 d = u_lamps[i].xyz - v_pos;
-            float dl = length(d);
-            vec3 ldir = d / dl;
-            float w = smoothstep(0.25, 0.6, ldir.z) * max(dot(n, ldir), 0.0) / (dl * dl);
-            float al = asin(min(u_lamps[i].w / dl, 1.0));
-            float sep = acos(clamp(dot(ldir, bdir), -1.0, 1.0));
-            float cover = 1.0 - smoothstep(abs(ab - al), ab + al, sep);
-            cover *= min(1.0, (ab * ab) / (al * al));
-            lit += w;
-            shadowed += w * cover;
-        }
-        float ambient = 0.035;
-        float ao = (u_radius * u_radius) / (db * db) * max(dot(n, bdir), 0.0);
-        keep *= (lit - shadowed + ambient * (1.0 - ao)) / (lit + ambient);
+        keep *= ball_shadow_keep(v_pos, n, u_balls[b], u_radius);
     }
     o_colour = vec4(vec3(keep), 1.0);
 }
