@@ -192,6 +192,7 @@ void Controller::play(const physics::Stroke& stroke) {
         record = &session_.play(stroke);
     } catch (const game::Refused& e) {
         refusal_ = e.what();
+        computer_decision_.reset();  // never retried frame after frame
         return;
     }
     refusal_.clear();
@@ -235,6 +236,7 @@ void Controller::update(double dt) {
             d = thinking_.get();
         } catch (const std::exception& e) {
             refusal_ = std::string("the computer player failed: ") + e.what();
+            hinting_ = false;
             return;
         }
         if (hinting_) apply_hint(d);
