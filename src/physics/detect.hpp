@@ -126,6 +126,11 @@ inline bool surely_apart(Vec2 dp, Vec2 dv, Vec2 da, double dist, double D, doubl
 /// f(τ) = |Δp + Δv·τ + ½Δa·τ²|² − D², a quartic.
 inline Prediction circle_contact(Vec2 dp, Vec2 dv, Vec2 da, double D, double reach,
                                  double horizon) {
+    // Out of reach, decided without a square root where the margin is clear: |Δp|² above
+    // (D + reach)²·(1 + 1e-9) means |Δp| − D > reach by ~5e-10·(D + reach), far above the
+    // rounding of either test, so the test below would return the same none.
+    const double limit = D + reach;
+    if (norm2(dp) > limit * limit * (1.0 + 1e-9)) return {};
     const double dist = norm(dp);
     if (dist - D > reach) return {};
     if (dist - D <= kTouchGap && dist > 0) {

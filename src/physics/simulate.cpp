@@ -60,6 +60,11 @@ public:
                const SimOptions& options)
         : table_(table), params_(params), options_(options), n_(balls.size()) {
         assert(n_ <= kMaxBalls && "at most 16 balls (ids 0-15)");
+        // Each pocket's lateral window for the drop test, once per simulation (the same
+        // expression as before, so the same bits).
+        drop_lateral_.reserve(table_.pockets.size());
+        for (const Pocket& pk : table_.pockets)
+            drop_lateral_.push_back(0.5 * norm(pk.mouth_b - pk.mouth_a) + table_.spec.jaw_depth);
         segments_.resize(n_);
         for (std::size_t i = 0; i < n_; ++i) {
             BallState s = balls[i];
@@ -225,9 +230,8 @@ private:
             consider(p.tau, Kind::nose, static_cast<int>(g), p.pushing);
         }
         for (std::size_t g = 0; g < table_.pockets.size(); ++g) {
-            const Pocket& pk = table_.pockets[g];
-            const double lateral = 0.5 * norm(pk.mouth_b - pk.mouth_a) + table_.spec.jaw_depth;
-            consider(detect::drop(m, pk, lateral), Kind::drop, static_cast<int>(g), false);
+            consider(detect::drop(m, table_.pockets[g], drop_lateral_[g]), Kind::drop,
+                     static_cast<int>(g), false);
         }
         own_[i] = own;
         // Pairs: a contact after either ball's own next event need not be searched, since that
@@ -376,6 +380,7 @@ private:
     bool truncated_ = false;
     std::vector<std::vector<Segment>> segments_;
     std::vector<Event> events_;
+    std::vector<double> drop_lateral_;  ///< per pocket: the drop test's lateral window
     std::array<Live, kMaxBalls> live_{};
     std::array<Candidate, kMaxBalls> own_{};
     /// Per ball k, the first of own_[k] and every pair of k (kept by predict_for).
