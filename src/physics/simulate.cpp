@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cassert>
 #include <cstdint>
 #include <limits>
@@ -65,6 +66,7 @@ public:
         drop_lateral_.reserve(table_.pockets.size());
         for (const Pocket& pk : table_.pockets)
             drop_lateral_.push_back(0.5 * norm(pk.mouth_b - pk.mouth_a) + table_.spec.jaw_depth);
+        group_faces();
         segments_.resize(n_);
         for (std::size_t i = 0; i < n_; ++i) {
             BallState s = balls[i];
@@ -221,14 +223,31 @@ private:
             own = c;
             m = m.within(tau);
         };
-        for (std::size_t g = 0; g < table_.lines.size(); ++g) {
+        // The faces and noses of a pocket out of the ball's reach are skipped (see
+        // group_faces); the rest are tried in the same order as ever.
+        auto try_line = [&](std::size_t g) {
             const detect::Prediction p = detect::line(m, table_.lines[g], R);
             consider(p.tau, Kind::line, static_cast<int>(g), p.pushing);
-        }
-        for (std::size_t g = 0; g < table_.noses.size(); ++g) {
+        };
+        auto try_nose = [&](std::size_t g) {
             const detect::Prediction p = detect::nose(m, table_.noses[g], R);
             consider(p.tau, Kind::nose, static_cast<int>(g), p.pushing);
+        };
+        if (!grouped_) {
+            for (std::size_t g = 0; g < table_.lines.size(); ++g) try_line(g);
+            for (std::size_t g = 0; g < table_.noses.size(); ++g) try_nose(g);
         }
+        std::uint64_t lines = lines_always_, noses = noses_always_;
+        for (const FaceGroup& fg : groups_) {
+            const double limit = fg.radius + R + m.reach * (1.0 + 1e-9) + 1e-5;
+            if (norm2(m.k.p - fg.centre) > limit * limit) continue;  // (false if reach is ∞)
+            lines |= fg.lines;
+            noses |= fg.noses;
+        }
+        for (; lines != 0; lines &= lines - 1)
+            try_line(static_cast<std::size_t>(std::countr_zero(lines)));
+        for (; noses != 0; noses &= noses - 1)
+            try_nose(static_cast<std::size_t>(std::countr_zero(noses)));
         for (std::size_t g = 0; g < table_.pockets.size(); ++g) {
             consider(detect::drop(m, table_.pockets[g], drop_lateral_[g]), Kind::drop,
                      static_cast<int>(g), false);
@@ -260,6 +279,47 @@ private:
             const auto [lo, hi] = std::minmax(i, j);
             pair(i, j) = Candidate{now_ + p.tau, Kind::ball_ball, static_cast<int>(lo),
                                    static_cast<int>(hi), p.pushing};
+        }
+    }
+
+    /// Groups each pocket's jaw faces and noses in a circle about the pocket's centre that holds
+    /// them all. A face or nose reports a contact only where the ball's centre comes within R
+    /// (up to ~1e-6 m: the touching tolerance, rounding) of it, at a point no farther from the
+    /// centre now than the reach; so a ball farther than radius + R + reach (+ 1e-5 m) from the
+    /// group's centre gets none from any of them, and skipping them changes nothing. Faces and
+    /// noses of no pocket (the rails), or tables with more than 64 of either, are always tried.
+    void group_faces() {
+        const std::size_t nl = table_.lines.size(), nn = table_.noses.size();
+        if (nl > 64 || nn > 64) return;  // not grouped: every face and nose is tried
+        grouped_ = true;
+        groups_.assign(table_.pockets.size(), FaceGroup{});
+        for (std::size_t k = 0; k < groups_.size(); ++k) groups_[k].centre = table_.pockets[k].centre;
+        auto grow = [](FaceGroup& fg, Vec2 at, double extent) {
+            const double r = (norm(at - fg.centre) + extent) * (1.0 + 1e-9) + 1e-9;
+            if (r > fg.radius) fg.radius = r;
+        };
+        for (std::size_t g = 0; g < nl; ++g) {
+            const CushionLine& l = table_.lines[g];
+            const auto bit = std::uint64_t{1} << g;
+            if (l.pocket < 0 || static_cast<std::size_t>(l.pocket) >= groups_.size()) {
+                lines_always_ |= bit;
+                continue;
+            }
+            FaceGroup& fg = groups_[static_cast<std::size_t>(l.pocket)];
+            // (the contact point a + along·dir, 0 ≤ along ≤ length, on the face: detect::line)
+            grow(fg, l.a + (0.5 * l.length) * l.dir, 0.5 * l.length);
+            fg.lines |= bit;
+        }
+        for (std::size_t g = 0; g < nn; ++g) {
+            const JawNose& n = table_.noses[g];
+            const auto bit = std::uint64_t{1} << g;
+            if (n.pocket < 0 || static_cast<std::size_t>(n.pocket) >= groups_.size()) {
+                noses_always_ |= bit;
+                continue;
+            }
+            FaceGroup& fg = groups_[static_cast<std::size_t>(n.pocket)];
+            grow(fg, n.centre, n.radius);
+            fg.noses |= bit;
         }
     }
 
@@ -381,6 +441,16 @@ private:
     std::vector<std::vector<Segment>> segments_;
     std::vector<Event> events_;
     std::vector<double> drop_lateral_;  ///< per pocket: the drop test's lateral window
+    /// A pocket's jaw faces and noses (bits of table_.lines, table_.noses) and a circle about
+    /// the pocket's centre that holds them.
+    struct FaceGroup {
+        Vec2 centre{};
+        double radius = 0.0;
+        std::uint64_t lines = 0, noses = 0;
+    };
+    std::vector<FaceGroup> groups_;
+    std::uint64_t lines_always_ = 0, noses_always_ = 0;  ///< faces and noses of no pocket
+    bool grouped_ = false;  ///< false: more than 64 faces or noses, none skipped
     std::array<Live, kMaxBalls> live_{};
     std::array<Candidate, kMaxBalls> own_{};
     /// Per ball k, the first of own_[k] and every pair of k (kept by predict_for).
