@@ -259,6 +259,10 @@ private:
         const motion::Kinematics ki = kinematics(i);
         const double speed_i = norm(ki.v);
         const bool rolling_i = current(i).start.motion == Motion::rolling;
+        // Ball i's reach up to its own next event, for the pairs that end there (the same
+        // call with the same arguments as in the loop, so the same bits).
+        const double reach_i_own =
+            detect::reach_bound(speed_i, live_[i].accel, own_[i].time - now_, rolling_i);
         for (std::size_t j = 0; j < n_; ++j) {
             if (j == i || !active(j) || ((later >> j) & 1u) != 0) continue;
             const double until = std::min(own_[i].time, own_[j].time);
@@ -267,7 +271,10 @@ private:
             const bool rolling_j = current(j).start.motion == Motion::rolling;
             // |v_j(now)| ≤ |v_j(t0)| + |a_j|·(now − t0): no square root per pair.
             const double speed_j = live_[j].speed + live_[j].accel * (now_ - current(j).t0);
-            const double reach_i = detect::reach_bound(speed_i, live_[i].accel, h, rolling_i);
+            const double reach_i =
+                until == own_[i].time
+                    ? reach_i_own
+                    : detect::reach_bound(speed_i, live_[i].accel, h, rolling_i);
             const double reach_j = detect::reach_bound(speed_j, live_[j].accel, h, rolling_j);
             if (reach_i == 0 && reach_j == 0) continue;
             const motion::Kinematics kj = kinematics(j);
