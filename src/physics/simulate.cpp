@@ -23,6 +23,12 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr std::size_t kMaxBalls = 16;
 
+constexpr std::array<std::array<double, kMaxBalls>, kMaxBalls> all_pairs(double v) {
+    std::array<std::array<double, kMaxBalls>, kMaxBalls> m{};
+    for (auto& row : m) row.fill(v);
+    return m;
+}
+
 /// What a predicted event is about. The order is the tie order of simultaneous events.
 enum class Kind : int { ball_ball = 0, line = 1, nose = 2, drop = 3, transition = 4 };
 
@@ -175,12 +181,24 @@ private:
         return best;
     }
 
-    /// The first of ball k's own candidate and all its pairs.
-    Candidate first_of(std::size_t k) {
-        Candidate best = own_[k];
-        for (std::size_t j = 0; j < n_; ++j)
-            if (j != k && pair(k, j).before(best)) best = pair(k, j);
-        return best;
+    /// The first of ball k's own candidate and all its pairs. Pairs of k of equal time are
+    /// ordered by the other ball's index (their lower index, then their higher), so the first
+    /// of the earliest found by a strict < in increasing j is the first in the total order; at
+    /// a tie with the own candidate the pair wins (ball_ball is the first kind). Pairs with no
+    /// contact (time ∞) and NaN times never win, as with before(); which of several candidates
+    /// at time ∞ is kept does not matter, since no event is ever taken at ∞.
+    Candidate first_of(std::size_t k) const {
+        const std::array<double, kMaxBalls>& row = pair_time_[k];
+        double t = kInf;
+        std::size_t best = k;
+        for (std::size_t j = 0; j < n_; ++j) {
+            if (row[j] < t) {
+                t = row[j];
+                best = j;
+            }
+        }
+        if (best == k || !(t <= own_[k].time)) return own_[k];
+        return pair(k, best);
     }
 
     /// Re-predicts everything that involves ball i (see predict_candidates), then brings the
@@ -196,8 +214,9 @@ private:
             if (f.kind == Kind::ball_ball && f.a == static_cast<int>(lo) &&
                 f.b == static_cast<int>(hi)) {
                 first_[j] = first_of(j);
-            } else if (pair(i, j).before(f)) {
-                first_[j] = pair(i, j);
+            } else if (pair_time_[i][j] < kInf) {
+                const Candidate c = pair(i, j);
+                if (c.before(f)) first_[j] = c;
             }
         }
     }
@@ -209,8 +228,7 @@ private:
     void predict_candidates(std::size_t i, std::uint32_t later) {
         const int ii = static_cast<int>(i);
         own_[i] = Candidate{};
-        for (std::size_t j = 0; j < n_; ++j)
-            if (j != i) pair(i, j) = Candidate{};
+        for (std::size_t j = 0; j < n_; ++j) pair_time_[i][j] = pair_time_[j][i] = kInf;
         if (!active(i)) return;
         const double R = params_.ball_radius;
         // Own events: the transition, then cushions, noses and drops, each searched only up to
@@ -283,9 +301,8 @@ private:
             const detect::Prediction p = detect::ball_ball({ki, h, reach_i, rolling_i},
                                                            {kj, h, reach_j, rolling_j}, R, h);
             if (std::isinf(p.tau)) continue;
-            const auto [lo, hi] = std::minmax(i, j);
-            pair(i, j) = Candidate{now_ + p.tau, Kind::ball_ball, static_cast<int>(lo),
-                                   static_cast<int>(hi), p.pushing};
+            pair_time_[i][j] = pair_time_[j][i] = now_ + p.tau;
+            pair_pushing_[i][j] = pair_pushing_[j][i] = p.pushing;
         }
     }
 
@@ -330,8 +347,11 @@ private:
         }
     }
 
-    Candidate& pair(std::size_t i, std::size_t j) {
-        return i < j ? pair_[i][j] : pair_[j][i];
+    /// Pair (i, j)'s candidate (i ≠ j), from pair_time_ and pair_pushing_.
+    Candidate pair(std::size_t i, std::size_t j) const {
+        const auto [lo, hi] = std::minmax(i, j);
+        return Candidate{pair_time_[i][j], Kind::ball_ball, static_cast<int>(lo),
+                         static_cast<int>(hi), pair_pushing_[i][j]};
     }
 
     // ---- resolve ----
@@ -465,7 +485,11 @@ private:
     static constexpr int kJamContacts = 16;
     double jam_time_ = -1.0;
     std::array<int, kMaxBalls> jam_count_{};
-    std::array<std::array<Candidate, kMaxBalls>, kMaxBalls> pair_{};
+    /// Per pair, both ways round (pair_time_[i][j] == pair_time_[j][i], so a ball's pairs are
+    /// one row): the predicted contact time (∞: none, and always on the diagonal) and whether
+    /// it is a push.
+    std::array<std::array<double, kMaxBalls>, kMaxBalls> pair_time_ = all_pairs(kInf);
+    std::array<std::array<bool, kMaxBalls>, kMaxBalls> pair_pushing_{};
 };
 
 }  // namespace
