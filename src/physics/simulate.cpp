@@ -53,13 +53,22 @@ struct Candidate {
 };
 
 class Simulation {
-    /// Per ball, for its current segment: the constant acceleration and its size, the end,
-    /// and the speed at the start (units: m/s², s, m/s).
+    /// Per ball, for its current segment: where and when it starts (a copy of the segment's
+    /// start, kept next to the rest), the constant acceleration and its size, the end, and
+    /// the speed at the start (units: m, m/s, m/s², s, m/s).
     struct Live {
-        Vec2 acc;
+        Vec2 pos, vel, acc;
+        double t0 = 0.0;
         double end = kInf;
         double speed = 0.0;
         double accel = 0.0;
+        Motion motion = Motion::stationary;
+    };
+    /// Where ball k can be until its own next event: within `reach` of `centre`, its position
+    /// when it was last predicted (the reach bound from then to own_[k]).
+    struct Disc {
+        Vec2 centre;
+        double reach = 0.0;
     };
 
 public:
@@ -133,20 +142,20 @@ private:
     double segment_end(std::size_t i) const { return live_[i].end; }
     /// Kinematics of ball i now, from its current segment's closed form.
     motion::Kinematics kinematics(std::size_t i) const {
-        const Segment& s = current(i);
+        const Live& s = live_[i];
         const double dt = now_ - s.t0;
-        const Vec2 a = live_[i].acc;
-        return {s.start.pos + dt * s.start.vel + (0.5 * dt * dt) * a, s.start.vel + dt * a, a};
+        const Vec2 a = s.acc;
+        return {s.pos + dt * s.vel + (0.5 * dt * dt) * a, s.vel + dt * a, a};
     }
     BallState state_now(std::size_t i) const {
         const Segment& s = current(i);
         return motion::evolve(params_, s.start, now_ - s.t0);
     }
     detect::Mover mover(std::size_t i, double until) const {
-        return detect::make_mover(kinematics(i), until - now_,
-                                  current(i).start.motion == Motion::rolling);
+        return detect::make_mover(kinematics(i), until - now_, rolling(i));
     }
-    bool active(std::size_t i) const { return current(i).start.motion != Motion::pocketed; }
+    bool active(std::size_t i) const { return live_[i].motion != Motion::pocketed; }
+    bool rolling(std::size_t i) const { return live_[i].motion == Motion::rolling; }
 
     void start_segment(std::size_t i, const BallState& s) {
         segments_[i].push_back({now_, s});
@@ -154,7 +163,8 @@ private:
     }
     Live make_live(const BallState& s, double t0) const {
         const Vec2 a = motion::acceleration(params_, s);
-        return {a, t0 + motion::duration(params_, s), norm(s.vel), norm(a)};
+        return {s.pos, s.vel, a, t0, t0 + motion::duration(params_, s), norm(s.vel), norm(a),
+                s.motion};
     }
 
     Event make_event(EventType type, std::initializer_list<std::size_t> balls) const {
@@ -276,19 +286,29 @@ private:
         // travel by then are skipped before any polynomial is built.
         const motion::Kinematics ki = kinematics(i);
         const double speed_i = norm(ki.v);
-        const bool rolling_i = current(i).start.motion == Motion::rolling;
+        const bool rolling_i = rolling(i);
         // Ball i's reach up to its own next event, for the pairs that end there (the same
         // call with the same arguments as in the loop, so the same bits).
         const double reach_i_own =
             detect::reach_bound(speed_i, live_[i].accel, own_[i].time - now_, rolling_i);
+        disc_[i] = {ki.p, reach_i_own};
         for (std::size_t j = 0; j < n_; ++j) {
             if (j == i || !active(j) || ((later >> j) & 1u) != 0) continue;
+            // Both discs (up to each ball's own next event, which bounds the pair's horizon)
+            // more than 2R + 1e-5 m apart: the balls stay that far apart, so the contact
+            // quartic is ≥ 4R·1e-5 on the whole horizon, far above its rounding (its terms are
+            // below (|Δp| + 3·(reach_i + reach_j))², a few m², kept so by the 50 m cap), and
+            // the tests below or the solver would give none. One test instead of the reach
+            // bounds and positions.
+            const double apart = disc_[i].reach + disc_[j].reach;
+            const double clear = 2 * R + apart + 1e-5;
+            if (apart < 50.0 && norm2(disc_[j].centre - ki.p) > clear * clear) continue;
             const double until = std::min(own_[i].time, own_[j].time);
             if (!(until >= now_)) continue;
             const double h = until - now_;
-            const bool rolling_j = current(j).start.motion == Motion::rolling;
+            const bool rolling_j = rolling(j);
             // |v_j(now)| ≤ |v_j(t0)| + |a_j|·(now − t0): no square root per pair.
-            const double speed_j = live_[j].speed + live_[j].accel * (now_ - current(j).t0);
+            const double speed_j = live_[j].speed + live_[j].accel * (now_ - live_[j].t0);
             const double reach_i =
                 until == own_[i].time
                     ? reach_i_own
@@ -480,6 +500,7 @@ private:
     bool grouped_ = false;  ///< false: more than 64 faces or noses, none skipped
     std::array<Live, kMaxBalls> live_{};
     std::array<Candidate, kMaxBalls> own_{};
+    std::array<Disc, kMaxBalls> disc_{};  ///< per ball, set by predict_candidates
     /// Per ball k, the first of own_[k] and every pair of k (kept by predict_for).
     std::array<Candidate, kMaxBalls> first_{};
     static constexpr int kJamContacts = 16;
