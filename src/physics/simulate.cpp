@@ -83,6 +83,7 @@ public:
             drop_lateral_.push_back(0.5 * norm(pk.mouth_b - pk.mouth_a) + table_.spec.jaw_depth);
         group_faces();
         segments_.resize(n_);
+        for (std::size_t k = 0; k < kMaxBalls; ++k) first_with_[k] = k;
         for (std::size_t i = 0; i < n_; ++i) {
             BallState s = balls[i];
             if (s.motion != Motion::pocketed) s = motion::settle(params_, s);
@@ -197,18 +198,23 @@ private:
     /// a tie with the own candidate the pair wins (ball_ball is the first kind). Pairs with no
     /// contact (time ∞) and NaN times never win, as with before(); which of several candidates
     /// at time ∞ is kept does not matter, since no event is ever taken at ∞.
-    Candidate first_of(std::size_t k) const {
+    /// Sets first_[k] to it, and first_with_[k] to the other ball where it is a pair (else k).
+    void update_first(std::size_t k) {
         const std::array<double, kMaxBalls>& row = pair_time_[k];
         double t = kInf;
         std::size_t best = k;
         for (std::size_t j = 0; j < n_; ++j) {
-            if (row[j] < t) {
-                t = row[j];
-                best = j;
-            }
+            const bool earlier = row[j] < t;
+            t = earlier ? row[j] : t;
+            best = earlier ? j : best;
         }
-        if (best == k || !(t <= own_[k].time)) return own_[k];
-        return pair(k, best);
+        if (best == k || !(t <= own_[k].time)) {
+            first_[k] = own_[k];
+            first_with_[k] = k;
+        } else {
+            first_[k] = pair(k, best);
+            first_with_[k] = best;
+        }
     }
 
     /// Re-predicts everything that involves ball i (see predict_candidates), then brings the
@@ -216,17 +222,18 @@ private:
     /// changed its first (it was that pair, or the new pair comes before it).
     void predict_for(std::size_t i, std::uint32_t later = 0) {
         predict_candidates(i, later);
-        first_[i] = first_of(i);
+        update_first(i);
         for (std::size_t j = 0; j < n_; ++j) {
             if (j == i) continue;
-            const Candidate& f = first_[j];
-            const auto [lo, hi] = std::minmax(i, j);
-            if (f.kind == Kind::ball_ball && f.a == static_cast<int>(lo) &&
-                f.b == static_cast<int>(hi)) {
-                first_[j] = first_of(j);
-            } else if (pair_time_[i][j] < kInf) {
+            if (first_with_[j] == i) {
+                update_first(j);
+            } else if (pair_time_[i][j] < kInf && pair_time_[i][j] <= first_[j].time) {
+                // (a tie is settled by before)
                 const Candidate c = pair(i, j);
-                if (c.before(f)) first_[j] = c;
+                if (c.before(first_[j])) {
+                    first_[j] = c;
+                    first_with_[j] = i;
+                }
             }
         }
     }
@@ -238,7 +245,8 @@ private:
     void predict_candidates(std::size_t i, std::uint32_t later) {
         const int ii = static_cast<int>(i);
         own_[i] = Candidate{};
-        for (std::size_t j = 0; j < n_; ++j) pair_time_[i][j] = pair_time_[j][i] = kInf;
+        pair_time_[i].fill(kInf);
+        for (std::size_t j = 0; j < n_; ++j) pair_time_[j][i] = kInf;
         if (!active(i)) return;
         const double R = params_.ball_radius;
         // Own events: the transition, then cushions, noses and drops, each searched only up to
@@ -503,6 +511,8 @@ private:
     std::array<Disc, kMaxBalls> disc_{};  ///< per ball, set by predict_candidates
     /// Per ball k, the first of own_[k] and every pair of k (kept by predict_for).
     std::array<Candidate, kMaxBalls> first_{};
+    /// Per ball k, the other ball of first_[k] where that is a pair of k, else k.
+    std::array<std::size_t, kMaxBalls> first_with_{};
     static constexpr int kJamContacts = 16;
     double jam_time_ = -1.0;
     std::array<int, kMaxBalls> jam_count_{};
