@@ -469,6 +469,28 @@ Coeffs<N> lowest(const Poly4& c) {
     return r;
 }
 
+/// True if p provably stays positive on (lo, hi] as computed, so that no evaluation of it there
+/// (Estrin's or Horner's form) can see a value ≤ 0, nor one within its noise band: 0 ≤ lo < hi
+/// finite, every coefficient finite, p(0) = c[0] ≥ 0, and p's slope at 0 more than what its
+/// negative terms can take off by hi: Σ_{i≥2} max(0, −c_i)·hi^(i−1) ≤ 0.75·c[1]. Then at each t
+/// of (lo, hi] the negative terms N are at most 0.75·c[1]·t, at most 3/4 of the positive ones P
+/// (c[1]·t among them), so p ≥ P/4, and the rounding of any evaluation (below 8ε·(P + N) <
+/// 14ε·P) or the noise band (4ε·(P + N)) is far below P/4. Such a p has no downward crossing
+/// there: the walk finds no sign change, so first_downward_crossing would return +infinity (a
+/// pair separating, a ball leaving a cushion: a rolling ball's slope there is exactly twice
+/// what its deceleration takes off by the time it stops).
+inline bool rises_throughout(const Poly4& c, double lo, double hi) {
+    if (!(c[1] > 0.0)) return false;  // (first: an approaching pair or ball fails here)
+    if (!(lo >= 0.0 && hi < kInf && c[0] >= 0.0 && c[1] < kInf)) return false;
+    double take = 0.0, power = hi;  // hi^(i−1)
+    for (int i = 2; i <= 4; ++i) {
+        if (!(std::fabs(c[i]) < kInf)) return false;
+        if (c[i] < 0.0) take += -c[i] * power;
+        power *= hi;
+    }
+    return c[0] < kInf && take <= 0.75 * c[1];
+}
+
 }  // namespace
 
 double eval(const Poly4& c, double t) {
@@ -478,7 +500,7 @@ double eval(const Poly4& c, double t) {
 }
 
 double first_downward_crossing(const Poly4& c, double lo, double hi) {
-    if (!(hi > lo)) return kInf;
+    if (!(hi > lo) || rises_throughout(c, lo, hi)) return kInf;
     switch (degree(c)) {
         case 4:
             return first_down<4>(lowest<4>(c), lo, hi);
