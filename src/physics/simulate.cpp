@@ -199,22 +199,33 @@ private:
     /// contact (time ∞) and NaN times never win, as with before(); which of several candidates
     /// at time ∞ is kept does not matter, since no event is ever taken at ∞.
     /// Sets first_[k] to it, and first_with_[k] to the other ball where it is a pair (else k).
+    /// Only the pairs with a contact (paired_) are looked at, in increasing j.
     void update_first(std::size_t k) {
         const std::array<double, kMaxBalls>& row = pair_time_[k];
         double t = kInf;
         std::size_t best = k;
-        for (std::size_t j = 0; j < n_; ++j) {
-            const bool earlier = row[j] < t;
-            t = earlier ? row[j] : t;
-            best = earlier ? j : best;
+        for (std::uint32_t m = paired_[k]; m != 0; m &= m - 1) {
+            const auto j = static_cast<std::size_t>(std::countr_zero(m));
+            if (row[j] < t) {
+                t = row[j];
+                best = j;
+            }
         }
         if (best == k || !(t <= own_[k].time)) {
             first_[k] = own_[k];
-            first_with_[k] = k;
+            set_first_with(k, k);
         } else {
             first_[k] = pair(k, best);
-            first_with_[k] = best;
+            set_first_with(k, best);
         }
+    }
+
+    /// Sets first_with_[k], keeping firsts_on_ in step.
+    void set_first_with(std::size_t k, std::size_t other) {
+        const std::size_t was = first_with_[k];
+        if (was != k) firsts_on_[was] &= ~(1u << k);
+        if (other != k) firsts_on_[other] |= 1u << k;
+        first_with_[k] = other;
     }
 
     /// Re-predicts everything that involves ball i (see predict_candidates), then brings the
@@ -223,8 +234,10 @@ private:
     void predict_for(std::size_t i, std::uint32_t later = 0) {
         predict_candidates(i, later);
         update_first(i);
-        for (std::size_t j = 0; j < n_; ++j) {
-            if (j == i) continue;
+        // (the other balls whose first is a pair with i, and those with a new pair with i;
+        // for the rest nothing changes)
+        for (std::uint32_t m = (firsts_on_[i] | paired_[i]) & ~(1u << i); m != 0; m &= m - 1) {
+            const auto j = static_cast<std::size_t>(std::countr_zero(m));
             if (first_with_[j] == i) {
                 update_first(j);
             } else if (pair_time_[i][j] < kInf && pair_time_[i][j] <= first_[j].time) {
@@ -232,7 +245,7 @@ private:
                 const Candidate c = pair(i, j);
                 if (c.before(first_[j])) {
                     first_[j] = c;
-                    first_with_[j] = i;
+                    set_first_with(j, i);
                 }
             }
         }
@@ -245,8 +258,12 @@ private:
     void predict_candidates(std::size_t i, std::uint32_t later) {
         const int ii = static_cast<int>(i);
         own_[i] = Candidate{};
-        pair_time_[i].fill(kInf);
-        for (std::size_t j = 0; j < n_; ++j) pair_time_[j][i] = kInf;
+        for (std::uint32_t m = paired_[i]; m != 0; m &= m - 1) {
+            const auto j = static_cast<std::size_t>(std::countr_zero(m));
+            pair_time_[i][j] = pair_time_[j][i] = kInf;
+            paired_[j] &= ~(1u << i);
+        }
+        paired_[i] = 0;
         if (!active(i)) return;
         const double R = params_.ball_radius;
         // Own events: the transition, then cushions, noses and drops, each searched only up to
@@ -331,6 +348,8 @@ private:
             if (std::isinf(p.tau)) continue;
             pair_time_[i][j] = pair_time_[j][i] = now_ + p.tau;
             pair_pushing_[i][j] = pair_pushing_[j][i] = p.pushing;
+            paired_[i] |= 1u << j;
+            paired_[j] |= 1u << i;
         }
     }
 
@@ -513,6 +532,9 @@ private:
     std::array<Candidate, kMaxBalls> first_{};
     /// Per ball k, the other ball of first_[k] where that is a pair of k, else k.
     std::array<std::size_t, kMaxBalls> first_with_{};
+    /// Per ball i, a bit for each other ball k whose first is its pair with i (first_with_[k]
+    /// == i).
+    std::array<std::uint32_t, kMaxBalls> firsts_on_{};
     static constexpr int kJamContacts = 16;
     double jam_time_ = -1.0;
     std::array<int, kMaxBalls> jam_count_{};
@@ -521,6 +543,8 @@ private:
     /// it is a push.
     std::array<std::array<double, kMaxBalls>, kMaxBalls> pair_time_ = all_pairs(kInf);
     std::array<std::array<bool, kMaxBalls>, kMaxBalls> pair_pushing_{};
+    /// Per ball, a bit for each other ball it has a predicted contact with (pair_time_ < ∞).
+    std::array<std::uint32_t, kMaxBalls> paired_{};
 };
 
 }  // namespace
