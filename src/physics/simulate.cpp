@@ -83,6 +83,11 @@ public:
             drop_lateral_.push_back(0.5 * norm(pk.mouth_b - pk.mouth_a) + table_.spec.jaw_depth);
         group_faces();
         segments_.resize(n_);
+        // Room for a typical shot's events and segments up front, so that few of them grow
+        // (and copy) their storage: a break of 16 balls has 141 events, and its busiest balls
+        // a dozen segments or so.
+        events_.reserve(std::min<std::size_t>(options_.max_events, 32 + 8 * n_));
+        for (auto& segs : segments_) segs.reserve(16);
         for (std::size_t k = 0; k < kMaxBalls; ++k) first_with_[k] = k;
         for (std::size_t i = 0; i < n_; ++i) {
             BallState s = balls[i];
