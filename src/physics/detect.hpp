@@ -56,7 +56,9 @@ struct Prediction {
     bool pushing = false;
 };
 
-inline Prediction ball_ball(const Mover& a, const Mover& b, double R, double horizon);
+/// `screened`: as for circle_contact (the event loop tests |Δp| against 2R + both reaches first).
+inline Prediction ball_ball(const Mover& a, const Mover& b, double R, double horizon,
+                            bool screened = false);
 inline Prediction line(const Mover& m, const CushionLine& l, double R);
 inline Prediction nose(const Mover& m, const JawNose& n, double R);
 /// Crossing of a pocket's drop line, within `lateral` of the pocket's axis.
@@ -123,14 +125,15 @@ inline bool surely_apart(Vec2 dp, Vec2 dv, Vec2 da, double dist, double D, doubl
 }
 
 /// Contact of a moving point with a fixed or moving circle of radius D about another point:
-/// f(τ) = |Δp + Δv·τ + ½Δa·τ²|² − D², a quartic.
+/// f(τ) = |Δp + Δv·τ + ½Δa·τ²|² − D², a quartic. `screened`: the caller has already found
+/// |Δp|² ≤ (D + reach)² (up to rounding), so the first test below could not reject.
 inline Prediction circle_contact(Vec2 dp, Vec2 dv, Vec2 da, double D, double reach,
-                                 double horizon) {
+                                 double horizon, bool screened = false) {
     // Out of reach, decided without a square root where the margin is clear: |Δp|² above
     // (D + reach)²·(1 + 1e-9) means |Δp| − D > reach by ~5e-10·(D + reach), far above the
     // rounding of either test, so the test below would return the same none.
     const double limit = D + reach;
-    if (norm2(dp) > limit * limit * (1.0 + 1e-9)) return {};
+    if (!screened && norm2(dp) > limit * limit * (1.0 + 1e-9)) return {};
     const double dist = norm(dp);
     if (dist - D > reach) return {};
     if (dist - D <= kTouchGap && dist > 0) {
@@ -160,10 +163,11 @@ inline Mover make_mover(const motion::Kinematics& k, double horizon,
             decelerating_along_velocity};
 }
 
-inline Prediction ball_ball(const Mover& a, const Mover& b, double R, double horizon) {
+inline Prediction ball_ball(const Mover& a, const Mover& b, double R, double horizon,
+                            bool screened) {
     if (a.reach == 0 && b.reach == 0) return {};
     return detail::circle_contact(b.k.p - a.k.p, b.k.v - a.k.v, b.k.a - a.k.a, 2.0 * R,
-                                  a.reach + b.reach, horizon);
+                                  a.reach + b.reach, horizon, screened);
 }
 
 inline Prediction nose(const Mover& m, const JawNose& n, double R) {

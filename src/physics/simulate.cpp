@@ -348,8 +348,10 @@ private:
             const motion::Kinematics kj = kinematics(j);
             const double limit = 2 * R + reach_i + reach_j;
             if (norm2(kj.p - ki.p) > limit * limit) continue;
-            const detect::Prediction p = detect::ball_ball({ki, h, reach_i, rolling_i},
-                                                           {kj, h, reach_j, rolling_j}, R, h);
+            // (screened: |Δp|² ≤ limit² here, and circle_contact's limit is the same sum up to
+            // an ulp, its test 1e-9 looser)
+            const detect::Prediction p = detect::ball_ball(
+                {ki, h, reach_i, rolling_i}, {kj, h, reach_j, rolling_j}, R, h, true);
             if (std::isinf(p.tau)) continue;
             pair_time_[i][j] = pair_time_[j][i] = now_ + p.tau;
             pair_pushing_[i][j] = pair_pushing_[j][i] = p.pushing;
