@@ -96,7 +96,8 @@ Played play(const ai::Position& pos, const ai::PlanSettings& settings, std::uint
                                                  ai::layout(s, s.positions.at(0)), &stroke);
     rules::Verdict v = rules::judge(pos.ruleset, s, shot.events());
     if (std::getenv("AI_VERBOSE"))
-        std::fprintf(stderr, "kind %d balls %zu call %d/%d speed %.2f side %.2f top %.2f exp %.2f sims %lld -> foul %d next %d over %d\n",
+        std::fprintf(stderr, "q %.2f kind %d balls %zu call %d/%d speed %.2f side %.2f top %.2f exp %.2f sims %lld -> foul %d next %d over %d\n",
+                     ai::best_shot_chance(pos, pos.state, ai::heading_sigma_deg),
                      static_cast<int>(plan.kind), pos.state.on_table.size(), s.call.ball, s.call.pocket, stroke.speed, stroke.side, stroke.top,
                      plan.expected_success, static_cast<long long>(plan.simulations), v.foul ? 1 : 0,
                      v.next_shooter ? static_cast<int>(*v.next_shooter) : -1, v.game_over ? 1 : 0);

@@ -34,6 +34,7 @@ constexpr std::array<double, 7> pot_speed_factors{1.3, 2.1, 1.0, 3.2, 4.6, 1.65,
 constexpr std::array<double, 5> safety_speeds{0.55, 1.0, 1.7, 2.6, 4.0};  // (unit: m/s)
 constexpr std::array<double, 2> kick_speeds{1.6, 3.2};                    // (unit: m/s)
 constexpr double min_speed = 0.25, max_speed = 8.0;                      // (unit: m/s)
+constexpr double max_variant_offset = 0.44;  // a variant's tip offset stays this far from centre: 3σ inside the miscue limit (unit: R)
 constexpr double roll_decel = 0.0981;  // μ_roll·g of the default parameters (unit: m/s²)
 constexpr double arrival_speed = 0.35;  // object ball speed wanted at the pocket (unit: m/s)
 
@@ -72,43 +73,76 @@ rules::Call safety_call(const Position& pos) {
     return rules::Call::safety();
 }
 
-std::vector<Candidate> pot_candidates(const Position& pos, Vec2 cue, bool in_hand,
-                                      const Effort& effort, double sigma_deg,
-                                      std::int64_t& simulations) {
+std::vector<RankedAim> ranked_aims(const Position& pos, Vec2 cue, double sigma_deg) {
     const double R = pos.params.ball_radius;
-    struct Ranked {
-        Aim aim;
-        double chance;
-    };
-    std::vector<Ranked> aims;
+    std::vector<RankedAim> aims;
     for (int ball : target_balls(pos.ruleset, pos.state))
         for (int pocket = 0; pocket < 6; ++pocket)
             if (std::optional<Aim> a = direct_aim(pos.table, R, cue, ball, pocket, pos.state.positions))
                 aims.push_back({*a, aim_chance(*a, R, sigma_deg)});
     std::stable_sort(aims.begin(), aims.end(),
-                     [](const Ranked& a, const Ranked& b) { return a.chance > b.chance; });
+                     [](const RankedAim& a, const RankedAim& b) { return a.chance > b.chance; });
+    return aims;
+}
+
+std::vector<Candidate> pot_strokes(const Position& pos, Vec2 cue, bool in_hand, const RankedAim& r,
+                                   const Effort& effort, std::int64_t& simulations) {
+    std::vector<Candidate> out;
+    const Vec2 object = pos.state.positions.at(r.aim.ball);
+    const double base = base_pot_speed(pos.params, r.aim);
+    for (int k = 0; k < std::min<int>(effort.speeds, static_cast<int>(pot_speed_factors.size())); ++k)
+        for (int j = 0; j < std::min<int>(effort.spins, static_cast<int>(spins.size())); ++j) {
+            Candidate c;
+            c.kind = Kind::pot;
+            c.prior = r.chance;
+            c.aim = r.aim;
+            c.cue_pos = spot(in_hand, cue);
+            c.call = pot_call(pos, r.aim.ball, r.aim.pocket);
+            c.stroke.speed = std::clamp(base * pot_speed_factors[static_cast<std::size_t>(k)],
+                                        min_speed, max_speed);
+            c.stroke.side = spins[static_cast<std::size_t>(j)].side;
+            c.stroke.top = spins[static_cast<std::size_t>(j)].top;
+            c.stroke.heading_deg = refine_heading(pos.table, pos.params, cue, object, r.aim,
+                                                  c.stroke, effort.refine_steps, simulations);
+            out.push_back(c);
+        }
+    return out;
+}
+
+std::vector<Candidate> pot_candidates(const Position& pos, Vec2 cue, bool in_hand,
+                                      const Effort& effort, double sigma_deg,
+                                      std::int64_t& simulations) {
+    std::vector<RankedAim> aims = ranked_aims(pos, cue, sigma_deg);
     if (aims.size() > static_cast<std::size_t>(effort.pot_pairs))
         aims.resize(static_cast<std::size_t>(effort.pot_pairs));
-
     std::vector<Candidate> out;
-    for (const Ranked& r : aims) {
-        const Vec2 object = pos.state.positions.at(r.aim.ball);
-        const double base = base_pot_speed(pos.params, r.aim);
-        for (int k = 0; k < std::min<int>(effort.speeds, static_cast<int>(pot_speed_factors.size())); ++k)
-            for (int j = 0; j < std::min<int>(effort.spins, static_cast<int>(spins.size())); ++j) {
-                Candidate c;
-                c.kind = Kind::pot;
-                c.prior = r.chance;
-                c.cue_pos = spot(in_hand, cue);
-                c.call = pot_call(pos, r.aim.ball, r.aim.pocket);
-                c.stroke.speed = std::clamp(base * pot_speed_factors[static_cast<std::size_t>(k)],
-                                            min_speed, max_speed);
-                c.stroke.side = spins[static_cast<std::size_t>(j)].side;
-                c.stroke.top = spins[static_cast<std::size_t>(j)].top;
-                c.stroke.heading_deg =
-                    refine_heading(pos.table, pos.params, cue, object, r.aim, c.stroke, 2, simulations);
-                out.push_back(c);
-            }
+    for (const RankedAim& r : aims) {
+        std::vector<Candidate> strokes = pot_strokes(pos, cue, in_hand, r, effort, simulations);
+        out.insert(out.end(), strokes.begin(), strokes.end());
+    }
+    return out;
+}
+
+std::vector<Candidate> pot_variants(const Position& pos, const Candidate& c,
+                                    std::int64_t& simulations) {
+    struct Change {
+        double speed, top;  // speed × factor, top + offset
+    };
+    static constexpr std::array<Change, 6> changes{
+        {{0.84, 0.0}, {0.92, 0.0}, {1.08, 0.0}, {1.18, 0.0}, {1.0, 0.18}, {1.0, -0.18}}};
+    std::vector<Candidate> out;
+    if (c.kind != Kind::pot || !c.aim) return out;
+    const Vec2 cue = c.cue_pos ? *c.cue_pos : pos.state.positions.at(0);
+    const Vec2 object = pos.state.positions.at(c.aim->ball);
+    for (const Change& change : changes) {
+        Candidate v = c;
+        v.stroke.speed = std::clamp(c.stroke.speed * change.speed, min_speed, max_speed);
+        v.stroke.top = c.stroke.top + change.top;
+        if (std::hypot(v.stroke.side, v.stroke.top) > max_variant_offset) continue;
+        if (v.stroke.speed == c.stroke.speed && v.stroke.top == c.stroke.top) continue;
+        v.stroke.heading_deg =
+            refine_heading(pos.table, pos.params, cue, object, *c.aim, v.stroke, 2, simulations);
+        out.push_back(v);
     }
     return out;
 }

@@ -12,6 +12,7 @@
 #include <optional>
 #include <vector>
 
+#include "ai/ghost_ball.hpp"
 #include "ai/level.hpp"
 #include "ai/position.hpp"
 #include "physics/stroke.hpp"
@@ -27,6 +28,7 @@ struct Candidate {
     rules::Call call;                      ///< kicks: set after the noiseless simulation
     std::optional<physics::Vec2> cue_pos;  ///< with ball in hand: where the cue ball goes
     double prior = 0.0;                    ///< pots: the analytic chance (ghost_ball.hpp)
+    std::optional<Aim> aim;                ///< pots: the ghost-ball aim the stroke is for
 };
 
 /// The call a shot needs in `s`: the ball and pocket when calls count (8-ball after the break),
@@ -35,10 +37,32 @@ rules::Call pot_call(const Position& pos, int ball, int pocket);
 /// "safety" when calls count, else nothing.
 rules::Call safety_call(const Position& pos);
 
-/// Pots from the cue ball at `cue`. Adds the refinement simulations to `simulations`.
+/// A direct pot and its analytic chance.
+struct RankedAim {
+    Aim aim;
+    double chance = 0.0;
+};
+/// Every direct pot of a target ball from the cue ball at `cue`, the likeliest first.
+std::vector<RankedAim> ranked_aims(const Position& pos, physics::Vec2 cue, double sigma_deg);
+
+/// The strokes tried for one pot: `effort`'s speeds × spins, each heading refined (aim.hpp).
+/// Adds the refinement simulations to `simulations`.
+std::vector<Candidate> pot_strokes(const Position& pos, physics::Vec2 cue, bool in_hand,
+                                   const RankedAim& aim, const Effort& effort,
+                                   std::int64_t& simulations);
+
+/// Pots from the cue ball at `cue`: the strokes of `effort.pot_pairs` likeliest pots. Adds the
+/// refinement simulations to `simulations`.
 std::vector<Candidate> pot_candidates(const Position& pos, physics::Vec2 cue, bool in_hand,
                                       const Effort& effort, double sigma_deg,
                                       std::int64_t& simulations);
+/// Pots close to the pot `c`: its speed a little lower and higher and its follow or draw a
+/// little more and less, each heading refined again (a finer search of the stroke around the
+/// best few; position play needs finer speeds than the first grid). Adds the refinement
+/// simulations to `simulations`.
+std::vector<Candidate> pot_variants(const Position& pos, const Candidate& c,
+                                    std::int64_t& simulations);
+
 std::vector<Candidate> safety_candidates(const Position& pos, physics::Vec2 cue, bool in_hand,
                                          const Effort& effort);
 std::vector<Candidate> kick_candidates(const Position& pos, physics::Vec2 cue, bool in_hand,

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "ai/ghost_ball.hpp"
+#include "ai/lookahead.hpp"
 #include "ai/parallel.hpp"
 #include "ai/table_value.hpp"
 #include "game/session.hpp"
@@ -63,7 +64,7 @@ physics::Stroke with_draw(const physics::Stroke& stroke, const NoiseDraw& d, dou
 }
 
 Trial Evaluator::play(const Candidate& c, const physics::Stroke& stroke, bool assign_call,
-                      rules::Call* call) const {
+                      rules::Call* call, const Effort* deeper) const {
     rules::GameState s = pos_.state;
     if (c.cue_pos) s.positions[0] = *c.cue_pos;
     const physics::Vec2 cue = s.positions.at(0);
@@ -74,17 +75,25 @@ Trial Evaluator::play(const Candidate& c, const physics::Stroke& stroke, bool as
     s.call = call ? *call : c.call;
     Trial t;
     if (shot.truncated()) {
-        t.value = truncated_value;
+        t.value = t.shallow = truncated_value;
         return t;
     }
     const rules::Verdict v = rules::judge(pos_.ruleset, s, shot.events());
     const rules::Player me = s.shooter;
-    t.value = verdict_value(pos_, s, v, sigma_deg_);
     t.foul = v.foul;
     const bool won = v.game_over && v.winner == me;
     const bool lost = v.game_over && v.winner != me;
     const bool stays = !v.game_over && ((v.choice && v.choice->by == me) ||
                                         (!v.choice && v.next_shooter == me));
+    t.shallow = verdict_value(pos_, s, v, sigma_deg_);
+    t.value = t.shallow;
+    if (deeper && stays && !v.choice) {
+        const std::size_t down =
+            s.on_table.size() - std::min(s.on_table.size(), v.state.on_table.size());
+        t.value = std::min(1.0, next_turn_value(pos_, v.state, *deeper, scale_, sigma_deg_,
+                                                t.simulations) +
+                                    progress_bonus * static_cast<double>(std::min<std::size_t>(down, 2)));
+    }
     const bool pot_like =
         c.kind == Kind::pot || c.kind == Kind::break_shot || (c.kind == Kind::kick && s.call.is_ball());
     t.success = pot_like ? (won || stays) : (!v.foul && !lost);
@@ -98,6 +107,10 @@ Trial Evaluator::nominal(Candidate& c) const {
 
 Trial Evaluator::trial(const Candidate& c, const NoiseDraw& draw) const {
     return play(c, with_draw(c.stroke, draw, scale_), false, nullptr);
+}
+
+Trial Evaluator::deep_trial(const Candidate& c, const NoiseDraw& draw, const Effort& effort) const {
+    return play(c, with_draw(c.stroke, draw, scale_), false, nullptr, &effort);
 }
 
 std::int64_t score_under_noise(const Evaluator& eval, const std::vector<Candidate>& candidates,
@@ -122,6 +135,31 @@ std::int64_t score_under_noise(const Evaluator& eval, const std::vector<Candidat
     std::int64_t sims = 0;
     for (std::size_t k = 0; k < which.size(); ++k)
         sims += static_cast<std::int64_t>(std::min(count, draws.size() - std::min(first, draws.size())));
+    return sims;
+}
+
+std::int64_t score_deep(const Evaluator& eval, const std::vector<Candidate>& candidates,
+                        const std::vector<std::size_t>& which, const std::vector<NoiseDraw>& draws,
+                        std::size_t count, const Effort& effort, std::vector<Score>& scores,
+                        int workers) {
+    const std::size_t n = std::max<std::size_t>(std::min(count, draws.size()), 1);
+    std::vector<Trial> trials(which.size() * n);
+    const NoiseDraw none;
+    parallel_for(trials.size(), workers, [&](std::size_t k) {
+        const Candidate& c = candidates[which[k / n]];
+        trials[k] = eval.deep_trial(c, draws.empty() ? none : draws[k % n], effort);
+    });
+    std::int64_t sims = 0;
+    for (std::size_t w = 0; w < which.size(); ++w) {  // reduce in index order: same bits always
+        Score& s = scores[which[w]];
+        double deeper = 0.0;
+        for (std::size_t d = 0; d < n; ++d) {
+            const Trial& t = trials[w * n + d];
+            deeper += t.value - t.shallow;
+            sims += t.simulations;
+        }
+        s.value += deeper / static_cast<double>(n);
+    }
     return sims;
 }
 

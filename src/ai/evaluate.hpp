@@ -29,8 +29,10 @@ physics::Stroke with_draw(const physics::Stroke& stroke, const NoiseDraw& draw, 
 /// One simulated play of a candidate.
 struct Trial {
     double value = 0.0;    ///< what the outcome is worth to the shooter (0 lost … 1 won)
+    double shallow = 0.0;  ///< the same, one ply deep (= value unless valued by lookahead.hpp)
     bool success = false;  ///< pots: the shooter stays at the table (or wins); safeties: no foul
     bool foul = false;
+    std::int64_t simulations = 1;  ///< physics simulations this trial ran (the second ply's too)
 };
 
 /// The mean of a candidate's trials.
@@ -52,12 +54,15 @@ class Evaluator {
     Trial nominal(Candidate& c) const;
     /// Plays the candidate with one noise draw.
     Trial trial(const Candidate& c, const NoiseDraw& draw) const;
+    /// Plays the candidate with one noise draw (none at scale 0) and, where the shooter stays at
+    /// the table, values the table two plies deep (lookahead.hpp) with `effort`'s second ply.
+    Trial deep_trial(const Candidate& c, const NoiseDraw& draw, const Effort& effort) const;
 
     double scale() const { return scale_; }
 
   private:
     Trial play(const Candidate& c, const physics::Stroke& stroke, bool assign_call,
-               rules::Call* call) const;
+               rules::Call* call, const Effort* deeper = nullptr) const;
 
     const Position& pos_;
     double scale_;
@@ -70,5 +75,15 @@ std::int64_t score_under_noise(const Evaluator& eval, const std::vector<Candidat
                                const std::vector<std::size_t>& which,
                                const std::vector<NoiseDraw>& draws, std::size_t first,
                                std::size_t count, std::vector<Score>& scores, int workers);
+
+/// Scores each candidate of `which` two plies deep (Evaluator::deep_trial) with the draws
+/// [0, count), which `scores` must already hold one ply deep: each score's value moves by the
+/// mean difference between its two- and one-ply values on those draws (a control variate: the
+/// outcome the two share cancels, and the difference is far less noisy than either). `workers`
+/// threads. Returns the simulations run.
+std::int64_t score_deep(const Evaluator& eval, const std::vector<Candidate>& candidates,
+                        const std::vector<std::size_t>& which, const std::vector<NoiseDraw>& draws,
+                        std::size_t count, const Effort& effort, std::vector<Score>& scores,
+                        int workers);
 
 }  // namespace ai

@@ -6,14 +6,25 @@
 namespace ai {
 
 Effort effort_for_level(int level) {
-    // noise, pairs, speeds, spins, safety speeds, contacts, sweep, shortlist, samples,
-    // finalists, placements, break samples
     static constexpr std::array<Effort, 5> levels{{
-        {4.0, 3, 2, 1, 2, 3, 36, 4, 4, 1, 1, 3},
-        {3.0, 4, 3, 2, 2, 3, 48, 6, 6, 2, 1, 4},
-        {2.0, 6, 3, 3, 3, 5, 72, 10, 10, 3, 2, 6},
-        {1.5, 10, 5, 5, 3, 5, 120, 24, 20, 4, 4, 8},
-        {1.0, 14, 7, 9, 4, 7, 180, 48, 40, 8, 6, 12},
+        {.noise_multiplier = 4.0, .pot_pairs = 3, .speeds = 2, .spins = 1, .safety_speeds = 2,
+         .safety_contacts = 3, .sweep_headings = 36, .shortlist = 4, .samples = 4, .finalists = 1,
+         .placements = 1, .break_samples = 3},
+        {.noise_multiplier = 3.0, .pot_pairs = 4, .speeds = 3, .spins = 2, .safety_speeds = 2,
+         .safety_contacts = 3, .sweep_headings = 48, .shortlist = 6, .samples = 6, .finalists = 2,
+         .placements = 1, .break_samples = 4, .polish = 1},
+        {.noise_multiplier = 2.0, .pot_pairs = 6, .speeds = 3, .spins = 3, .safety_speeds = 3,
+         .safety_contacts = 5, .sweep_headings = 72, .shortlist = 10, .samples = 10, .finalists = 3,
+         .placements = 2, .break_samples = 6, .polish = 2, .deep_finalists = 2, .deep_samples = 6,
+         .next_pairs = 2, .next_speeds = 2, .next_spins = 2},
+        {.noise_multiplier = 1.5, .pot_pairs = 10, .speeds = 5, .spins = 5, .safety_speeds = 3,
+         .safety_contacts = 5, .sweep_headings = 120, .shortlist = 24, .samples = 20, .finalists = 4,
+         .placements = 4, .break_samples = 8, .polish = 2, .deep_finalists = 4, .deep_samples = 8,
+         .next_pairs = 2, .next_speeds = 3, .next_spins = 3},
+        {.noise_multiplier = 1.0, .pot_pairs = 14, .speeds = 7, .spins = 9, .safety_speeds = 4,
+         .safety_contacts = 7, .sweep_headings = 180, .shortlist = 48, .samples = 40, .finalists = 8,
+         .placements = 6, .break_samples = 12, .polish = 4, .deep_finalists = 8, .deep_samples = 16,
+         .next_pairs = 3, .next_speeds = 4, .next_spins = 4},
     }};
     return levels[static_cast<std::size_t>(std::clamp(level, min_level, max_level) - 1)];
 }

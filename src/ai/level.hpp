@@ -22,6 +22,13 @@ struct Effort {
     int finalists = 3;        ///< the best few get `samples` more
     int placements = 3;       ///< ball-in-hand spots searched in full
     int break_samples = 6;    ///< noisy simulations per break candidate
+    int polish = 0;           ///< the best few pots after the noisy rounds, searched around finer
+    int deep_finalists = 0;   ///< the best few after the noisy rounds, valued two plies deep
+    int deep_samples = 0;     ///< noisy plays per deep finalist, each valued by lookahead.hpp
+    int next_pairs = 3;       ///< second ply: (ball, pocket) pairs tried
+    int next_speeds = 3;      ///< second ply: speeds per aim
+    int next_spins = 3;       ///< second ply: spins per aim
+    int refine_steps = 2;     ///< secant steps of the heading refinement (aim.hpp) per pot
 };
 
 /// The effort of `level` (clamped to 1–5).

@@ -67,19 +67,41 @@ std::vector<std::size_t> all_indices(std::size_t n) {
     return v;
 }
 
-// Shortlist under noise, then more draws for the finalists; returns the index of the best.
-std::size_t choose_under_noise(Search& s, const std::vector<Candidate>& cands,
-                               const std::vector<Score>& nominal, std::vector<Score>& noisy,
-                               std::size_t shortlist) {
+// Shortlist under noise, then more draws for the finalists; with `deeper` (where the level has
+// it) the best pots are searched around finer and the best few valued two plies deep. Returns
+// the index of the best; `cands`, `nominal` and `noisy` grow by the variants.
+std::size_t choose_under_noise(Search& s, std::vector<Candidate>& cands,
+                               std::vector<Score>& nominal, std::vector<Score>& noisy,
+                               std::size_t shortlist, bool deeper) {
     std::vector<std::size_t> list = best_of(nominal, all_indices(cands.size()), shortlist);
     noisy.assign(cands.size(), Score{});
     const std::size_t n = s.eval.scale() == 0.0 ? 1 : static_cast<std::size_t>(s.effort.samples);
     s.simulations += score_under_noise(s.eval, cands, list, s.draws, 0, n, noisy, s.workers);
+    std::size_t drawn = n;
     if (s.eval.scale() > 0.0 && s.effort.finalists > 1) {
         std::vector<std::size_t> finals =
             best_of(noisy, list, static_cast<std::size_t>(s.effort.finalists));
         s.simulations += score_under_noise(s.eval, cands, finals, s.draws, n, n, noisy, s.workers);
         list = finals;
+        drawn = 2 * n;
+    }
+    if (deeper && s.effort.polish > 0) {
+        const std::size_t from = cands.size();
+        for (std::size_t i : best_of(noisy, list, static_cast<std::size_t>(s.effort.polish))) {
+            std::vector<Candidate> more = pot_variants(s.pos, cands[i], s.simulations);
+            cands.insert(cands.end(), more.begin(), more.end());
+        }
+        score_nominal(s, cands, nominal, from);
+        noisy.resize(cands.size());
+        std::vector<std::size_t> added(cands.size() - from);
+        std::iota(added.begin(), added.end(), from);
+        s.simulations += score_under_noise(s.eval, cands, added, s.draws, 0, drawn, noisy, s.workers);
+        list.insert(list.end(), added.begin(), added.end());
+    }
+    if (deeper && s.effort.deep_finalists > 0) {
+        list = best_of(noisy, list, static_cast<std::size_t>(s.effort.deep_finalists));
+        const std::size_t m = s.eval.scale() == 0.0 ? 1 : static_cast<std::size_t>(s.effort.deep_samples);
+        s.simulations += score_deep(s.eval, cands, list, s.draws, m, s.effort, noisy, s.workers);
     }
     return best_of(noisy, list, 1).front();
 }
@@ -188,7 +210,7 @@ Plan plan(const Position& pos, const PlanSettings& settings, std::uint64_t seed)
 
     std::vector<Score> noisy;
     const std::size_t best =
-        choose_under_noise(s, cands, nominal, noisy, static_cast<std::size_t>(effort.shortlist));
+        choose_under_noise(s, cands, nominal, noisy, static_cast<std::size_t>(effort.shortlist), true);
     Candidate chosen = cands[best];
     double chosen_value = noisy[best].value, chosen_success = noisy[best].success;
 
@@ -199,7 +221,7 @@ Plan plan(const Position& pos, const PlanSettings& settings, std::uint64_t seed)
         score_nominal(s, pushes, push_nominal, 0);
         std::vector<Score> push_noisy;
         const std::size_t p = choose_under_noise(s, pushes, push_nominal, push_noisy,
-                                                 static_cast<std::size_t>(effort.shortlist / 2 + 1));
+                                                 static_cast<std::size_t>(effort.shortlist / 2 + 1), false);
         if (push_noisy[p].value > chosen_value) {
             chosen = pushes[p];
             chosen_value = push_noisy[p].value;

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "ai/position.hpp"
+#include "game/player.hpp"
 #include "physics/shot.hpp"
 #include "physics/simulate.hpp"
 #include "rules/judge.hpp"

@@ -1,0 +1,41 @@
+#include "ai/lookahead.hpp"
+
+#include <algorithm>
+#include <vector>
+
+#include "ai/candidates.hpp"
+#include "ai/evaluate.hpp"
+#include "ai/table_value.hpp"
+
+namespace ai {
+
+double next_turn_value(const Position& base, const rules::GameState& s, const Effort& effort,
+                       double scale, double sigma_deg, std::int64_t& simulations) {
+    auto cue = s.positions.find(0);
+    if (cue_in_hand(s) || cue == s.positions.end())
+        return table_value(best_shot_chance(base, s, sigma_deg));
+    const Position next{base.ruleset, base.table, base.params, s, std::nullopt};
+    Effort second = effort;
+    second.pot_pairs = effort.next_pairs;
+    second.speeds = effort.next_speeds;
+    second.spins = effort.next_spins;
+    second.refine_steps = 1;  // one secant step: the second ply only ranks
+    std::vector<RankedAim> aims = ranked_aims(next, cue->second, sigma_deg);
+    if (aims.size() > static_cast<std::size_t>(second.pot_pairs))
+        aims.resize(static_cast<std::size_t>(second.pot_pairs));
+    const Evaluator eval(next, scale, sigma_deg);
+    double best = table_value(0.0);  // nothing on: a safety keeps the game about even
+    for (const RankedAim& r : aims) {
+        // No stroke of this pot, nor of the less likely ones after it, can beat `best`: a
+        // stroke is worth at most chance × 1 + (1 − chance) × the miss (the result is the same).
+        if (r.chance + (1.0 - r.chance) * next_miss_value <= best) break;
+        for (Candidate& c : pot_strokes(next, cue->second, false, r, second, simulations)) {
+            const Trial t = eval.nominal(c);
+            ++simulations;
+            best = std::max(best, c.prior * t.value + (1.0 - c.prior) * next_miss_value);
+        }
+    }
+    return best;
+}
+
+}  // namespace ai

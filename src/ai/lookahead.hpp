@@ -1,0 +1,28 @@
+// The second ply: what a table is worth to the player who stays at it, found by playing his best
+// few next pots without noise and valuing what each leaves (table_value.hpp, one ply further),
+// weighted by each pot's analytic chance (ghost_ball.hpp). It replaces the one-shot estimate
+// T(q) of table_value.hpp for the finalists of a decision: a shot that leaves an easy pot with no
+// way on to the ball after is worth less than one that leaves a route.
+#pragma once
+
+#include <cstdint>
+
+#include "ai/level.hpp"
+#include "ai/position.hpp"
+#include "rules/game_state.hpp"
+
+namespace ai {
+
+/// What a missed next pot is worth to the player who missed it: the opponent comes to a table
+/// with something on (1 − T(q) for a middling q).
+inline constexpr double next_miss_value = 0.25;
+
+/// The value of `s` (cue ball on the table, the shooter of `s` to play) for its shooter: the best
+/// of his next pots, each played once without noise by the rules and valued one ply further,
+/// times its chance, plus the chance of missing times `next_miss_value`; at least the value of a
+/// table with nothing on (he can play safe). `effort`'s pot pairs, speeds and spins are the ones
+/// of the second ply (`Effort::next_*`). Adds the simulations it runs to `simulations`.
+double next_turn_value(const Position& base, const rules::GameState& s, const Effort& effort,
+                       double scale, double sigma_deg, std::int64_t& simulations);
+
+}  // namespace ai
