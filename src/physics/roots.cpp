@@ -22,21 +22,29 @@
 // a double root (p touches 0 without changing sign) is not reported. Where p is below its own
 // rounding noise the sign means nothing; such values count as 0 (see value_or_noise_zero).
 //
-// Cost (a typical contact quartic: ~75 ns on the 2-core development machine): the critical
-// points of p' (roots of the quadratic p'') come from the closed form; those of p (roots of
-// the cubic p') are needed only until the sign of p there is certain, often after one Newton
-// step; first_downward_crossing stops at the first crossing and never looks for later critical
-// points; and Newton starts from the root of a Taylor parabola at an end of the piece, so two
-// or three steps reach full precision. Polynomials are evaluated in Estrin's form (Knuth,
-// TAOCP vol. 2, §4.6.4), which shortens the dependency chain of each Newton step, and whose
-// rounding error is no larger than Horner's. No allocation, no exceptions, no FMA: the same
-// input gives the same bits everywhere.
+// A quartic (degree 4) is first given to a faster path (roots_convex_pieces.cpp): its interval
+// is cut at the inflection points, and each convex or concave piece is decided from a few
+// evaluations, its crossing refined by Halley's iteration with a compensated last step (so its
+// roots are correctly rounded where well conditioned); it answers only where every sign it uses
+// is certain, and leaves the rest (touching starts, noise-level dips, an infinite horizon) to
+// the isolation below, which decides every case.
+//
+// Cost of the isolation: the critical points of p' (roots of the quadratic p'') come from the
+// closed form; those of p (roots of the cubic p') are needed only until the sign of p there is
+// certain, often after one Newton step; first_downward_crossing stops at the first crossing and
+// never looks for later critical points; and Newton starts from the root of a Taylor parabola
+// at an end of the piece, so two or three steps reach full precision. Polynomials are evaluated
+// in Estrin's form (Knuth, TAOCP vol. 2, §4.6.4), which shortens the dependency chain of each
+// Newton step, and whose rounding error is no larger than Horner's. No allocation, no
+// exceptions, no FMA: the same input gives the same bits everywhere.
 #include "physics/roots.hpp"
 
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+
+#include "physics/roots_convex_pieces.hpp"
 
 namespace physics::roots {
 
@@ -502,8 +510,22 @@ double eval(const Poly4& c, double t) {
 double first_downward_crossing(const Poly4& c, double lo, double hi) {
     if (!(hi > lo) || rises_throughout(c, lo, hi)) return kInf;
     switch (degree(c)) {
-        case 4:
+        case 4: {
+            // The usual case (a contact quartic) by its convexity pieces; the walk where they
+            // cannot decide (see roots_convex_pieces.cpp), such as a start with p(lo) ≤ 0
+            // (touching bodies), which is asked here without the call where lo = 0.
+            if (lo == 0.0 && !(c[0] > 0.0)) return first_down<4>(lowest<4>(c), lo, hi);
+            const convex_pieces::Answer r = convex_pieces::first_downward_crossing(c, lo, hi);
+            switch (r.outcome) {
+                case convex_pieces::Outcome::none:
+                    return kInf;
+                case convex_pieces::Outcome::root:
+                    return r.t;
+                case convex_pieces::Outcome::unsure:
+                    break;
+            }
             return first_down<4>(lowest<4>(c), lo, hi);
+        }
         case 3:
             return first_down<3>(lowest<3>(c), lo, hi);
         case 2:

@@ -1,0 +1,326 @@
+// The first downward crossing of a quartic by its pieces of constant convexity.
+//
+// The roots of p'' (a quadratic: closed form) cut [lo, hi] into at most three pieces, on each of
+// which p is convex or concave (they alternate). Going right from p(lo) > 0, with p > 0 shown up
+// to the start x of each piece:
+//  - concave piece [x, e]: p's minimum there is at an end, so it holds a crossing iff p(e) < 0,
+//    and then exactly one;
+//  - convex piece: p falls to its minimum m (where p' = 0, or e) and rises again, so it holds a
+//    crossing iff p(m) < 0, and the crossing lies left of any point y with p(y) < 0. m is found
+//    by Newton's iteration on p' (started from the root of p'’s Taylor parabola at x), until an
+//    iterate y has p(y) < 0 (then [x, y] holds the crossing as its one sign change), or a
+//    rigorous lower bound on p(m) from an iterate near m is positive (no crossing).
+// The crossing is then refined by Halley's iteration in its bracket, the last step with the
+// compensated value of p (Graillat, Langlois, Louvet 2005), so a root is right to about an ulp
+// even where the plain value of p is rounding noise.
+//
+// Anything else — p(lo) ≤ 0 (touching bodies: the walk's conventions apply), a value that is 0
+// or in the noise band where its sign is needed (a touch, a near-double root closer than the
+// noise), an overflow, no decision after kMaxSteps — is answered `unsure`, and roots.cpp falls
+// back to the general isolation (Collins–Loos), which handles every case. So this path takes
+// only the cases whose signs are certain: a clean hit, a miss, a grazing hit whose dip is deeper
+// than the rounding noise, a quadratic in disguise.
+//
+// Cost: about six evaluations of p and its derivatives and two square roots for a hit, instead
+// of the roots of the cubic p' (each by its own Newton iteration) and two Taylor start points.
+//
+// Evaluation is Estrin's form, as in roots.cpp; no FMA, no allocation: same input, same bits.
+#include "physics/roots_convex_pieces.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace physics::roots::convex_pieces {
+
+namespace {
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+/// A piece not decided after this many steps (p(m) within the noise, or p' flat) is left to
+/// the walk; so is a refinement not converged after as many (it never happens).
+constexpr int kMaxSteps = 40;
+/// A bracket on the minimum this narrow (relative) with its sign still unknown: p(m) is within
+/// the rounding noise (a touch, or a near-double root below it): the walk's conventions decide.
+constexpr double kCriticalWidth = 1e-10;
+
+struct Sample {
+    double f, df, half_d2f;  ///< p, p', p''/2
+};
+
+Sample sample(const Poly4& c, double t) {
+    const double t2 = t * t;
+    return {(c[0] + c[1] * t) + t2 * ((c[2] + c[3] * t) + c[4] * t2),
+            (c[1] + (2.0 * c[2]) * t) + t2 * ((3.0 * c[3]) + (4.0 * c[4]) * t),
+            (c[2] + (3.0 * c[3]) * t) + (6.0 * c[4]) * t2};
+}
+
+/// p'''(t).
+double third_derivative(const Poly4& c, double t) {
+    return (6.0 * c[3]) + (24.0 * c[4]) * t;
+}
+
+/// Σ|c_i||t|^i: the scale of p's rounding error at t (Higham §5.1: below 2N·ε times this).
+double size(const Poly4& c, double t) {
+    const double a = std::fabs(t);
+    double s = std::fabs(c[4]);
+    for (int i = 3; i >= 0; --i) s = s * a + std::fabs(c[i]);
+    return s;
+}
+
+/// p(t) < 0 by more than the rounding bound of its evaluation (as roots.cpp's noise test).
+bool clearly_negative(const Poly4& c, double t, double f) {
+    return f < 0.0 && -f > 4.0 * kEps * size(c, t);
+}
+
+/// x·y = p + e exactly (Dekker 1971, without FMA; the build forbids contraction), and x + y.
+struct Exact {
+    double p, e;
+};
+Exact split(double x) {
+    const double c = 134217729.0 * x;  // 2^27 + 1: x = h + l, each of 26 bits
+    const double h = c - (c - x);
+    return {h, x - h};
+}
+Exact two_product(double x, const Exact& y, double y_full) {
+    const double p = x * y_full;
+    const Exact xs = split(x);
+    return {p, ((xs.p * y.p - p) + xs.p * y.e + xs.e * y.p) + xs.e * y.e};
+}
+Exact two_sum(double a, double b) {
+    const double s = a + b, bb = s - a;
+    return {s, (a - (s - bb)) + (b - bb)};
+}
+
+/// p(t) as accurately as if computed in twice the precision, then rounded: Estrin's form with
+/// every product and sum replaced by its error-free transformation, the errors carried along
+/// and added at the end (the compensated schemes of S. Graillat, Ph. Langlois, N. Louvet,
+/// "Compensated Horner scheme", 2005, in Estrin's order for a shorter chain). The result's
+/// error is about ε·|p(t)| + O(ε²)·Σ|c_i||t|^i. Non-finite if a split overflows (|·| > 2^996).
+double accurate_value(const Poly4& c, double t) {
+    const Exact ts = split(t);
+    const Exact t2 = two_product(t, ts, t);  // t² = t2.p + t2.e
+    const Exact t2s = split(t2.p);
+    const Exact c1t = two_product(c[1], ts, t);
+    const Exact a = two_sum(c[0], c1t.p);  // c0 + c1·t
+    const Exact c3t = two_product(c[3], ts, t);
+    const Exact b1 = two_sum(c[2], c3t.p);  // c2 + c3·t
+    const Exact c4t2 = two_product(c[4], t2s, t2.p);
+    const Exact b = two_sum(b1.p, c4t2.p);  // (c2 + c3·t) + c4·t²
+    const double b_error = b.e + ((b1.e + c3t.e) + (c4t2.e + c[4] * t2.e));
+    const Exact t2b = two_product(b.p, t2s, t2.p);
+    const Exact s = two_sum(a.p, t2b.p);
+    return s.p + (s.e + ((a.e + c1t.e) + (t2b.e + (t2.p * b_error + t2.e * b.p))));
+}
+
+Answer unsure() {
+    return {};
+}
+
+/// Where to start in a bracket [a, y] with p(y) = s.f < 0: the nearer root of the Taylor
+/// parabola at y, p + p'·u + (p''/2)·u² = 0 going left (u = y − t ≥ 0), in the cancellation-free
+/// form 2|p| / (−p' + √(p'² − 2p·p'')). It is exact for a quadratic and close for a grazing
+/// contact, whose root sits near the minimum. (NaN where it has none: then the midpoint.)
+double start_left_of(double y, const Sample& s) {
+    const double disc = s.df * s.df - 4.0 * s.half_d2f * s.f;
+    if (!(disc >= 0.0)) return kNaN;
+    const double denominator = -s.df + std::sqrt(disc);
+    return denominator > 0.0 ? y - 2.0 * -s.f / denominator : kNaN;
+}
+
+/// Halley's step at a sample: x − p·p' / (p'² − p·p''/2).
+double halley_step(const Sample& s) {
+    return s.f * s.df / (s.df * s.df - s.f * s.half_d2f);
+}
+
+/// Halley's last step from x, with the compensated value of p (where it is finite), kept in
+/// [a, b].
+double last_step(const Poly4& c, double x, Sample s, double a, double b) {
+    const double f = accurate_value(c, x);
+    if (std::isfinite(f)) s.f = f;
+    const double step = halley_step(s);
+    const double t = std::isfinite(step) ? x - step : x;
+    return t < a ? a : (t > b ? b : t);
+}
+
+/// The one sign change of p in [a, b], given p(a) > 0 > p(b) (both beyond the noise), from x0:
+/// Halley's iteration kept in the bracket (a step that leaves it is replaced by bisection).
+/// Its error after a step s is about A·|s|³, A = |(p''/2p')² − p'''/6p'| (cubic convergence);
+/// with a margin of 2, once that predicts that a step (from x, or from the next iterate) lands
+/// within a tenth of an ulp of the root, that step is the last and is taken with the compensated
+/// value of p, so the root is right to about an ulp even where p's plain value is rounding noise
+/// (there the iterates before it only need to reach the noise band). The result is kept in
+/// [a, b] as given: there p's sign is certain.
+Answer refine(const Poly4& c, double a, double b, double x0) {
+    const double a0 = a, b0 = b;
+    double x = x0 > a && x0 < b ? x0 : a + 0.5 * (b - a);
+    Sample s = sample(c, x);
+    for (int i = 0; i < kMaxSteps; ++i) {
+        if (s.f > 0.0) {
+            a = x;
+        } else if (s.f < 0.0) {
+            b = x;
+        }
+        const double step = halley_step(s);
+        const double next = x - step;
+        const double gain =
+            2.0 * (s.half_d2f * s.half_d2f + std::fabs(third_derivative(c, x) * s.df) / 6.0) /
+            (s.df * s.df);                                            // 2A
+        const double error = gain * (step * step) * std::fabs(step);  // of next
+        const double tolerance = 0.1 * kEps * std::fabs(x);
+        if (error <= tolerance || !(b - a > 4.0 * kEps * std::fabs(x))) {
+            return {Outcome::root, last_step(c, x, s, a0, b0)};
+        }
+        const bool in = next > a && next < b;
+        x = in ? next : a + 0.5 * (b - a);
+        s = sample(c, x);
+        if (in && gain * (error * error) * error <= tolerance) {
+            return {Outcome::root, last_step(c, x, s, a0, b0)};
+        }
+    }
+    return unsure();
+}
+
+/// A convex piece [x, e] with p(x) = sl.f > 0: `none` if p > 0 on all of it, its first crossing,
+/// or `unsure`. m (the minimum) is sought by Newton's iteration on p', in a bracket [l, r]
+/// (p'(l) < 0 < p'(r)), from the root of the Taylor parabola of p' at x (or, if p's own Taylor
+/// parabola at x reaches 0, from a little beyond that root: exact for a quadratic in disguise).
+/// At each iterate y:
+///  - p(y) < 0: the crossing is the one sign change in [x, y];
+///  - no crossing if p(m) > 0 is certain: near y, with δ = −p'/p'' (Newton's step on p'), take
+///    J = [y − 2|δ|, y + 2|δ|]; there p'' ≥ M = p''(y) − |p'''(y)|·2|δ| − 12|c4|·4δ² (Taylor),
+///    so if M > 0 and |p'(y)| ≤ M·2|δ|, p' has its root m in J, and p ≥ p(y) − p'(y)²/(2M) on J,
+///    which holds the minimum of the piece (p' < 0 left of J, > 0 right of it).
+Answer convex_piece(const Poly4& c, double x, Sample sl, double e) {
+    if (!(sl.df < 0.0)) return std::isnan(sl.df) ? unsure() : Answer{Outcome::none};
+    double l = x, r = e;
+    bool have_r = false;  // p'(r) > 0 is known
+    double y;
+    double start = kNaN;  // where the crossing is expected, if y is the parabola's guess
+    {
+        const double d1 = sl.df, d2 = 2.0 * sl.half_d2f, d3 = third_derivative(c, x);
+        const double disc_p = sl.df * sl.df - 4.0 * sl.half_d2f * sl.f;
+        const double disc_d = d2 * d2 - 2.0 * d1 * d3;
+        if (disc_p >= 0.0) {
+            const double u = 2.0 * sl.f / (-sl.df + std::sqrt(disc_p));
+            start = x + u;
+            y = x + (1.0 + 0x1p-20) * u;
+        } else if (disc_d >= 0.0) {
+            y = x + -2.0 * d1 / (d2 + std::sqrt(disc_d));
+        } else {
+            y = x - d1 / d2;
+        }
+    }
+    for (int i = 0; i < kMaxSteps; ++i) {
+        if (!(y > l && y < r)) {
+            if (have_r) {
+                y = l + 0.5 * (r - l);
+            } else {
+                // The step reaches e: p may fall all the way.
+                const Sample se = sample(c, e);
+                if (!(se.df > 0.0)) {
+                    if (se.f > 0.0) return {Outcome::none};
+                    if (clearly_negative(c, e, se.f)) return refine(c, x, e, start_left_of(e, se));
+                    return unsure();
+                }
+                have_r = true;
+                y = e - se.df / (2.0 * se.half_d2f);
+                if (!(y > l && y < r)) y = l + 0.5 * (r - l);
+            }
+        }
+        const Sample sy = sample(c, y);
+        if (!(sy.f > 0.0)) {
+            if (!clearly_negative(c, y, sy.f)) return unsure();
+            return refine(c, x, y, start > x && start < y ? start : start_left_of(y, sy));
+        }
+        start = kNaN;
+        if (sy.df < 0.0) {
+            l = y;
+        } else if (sy.df > 0.0) {
+            r = y;
+            have_r = true;
+        } else {
+            return std::isnan(sy.df) ? unsure() : Answer{Outcome::none};  // m = y, p(m) > 0
+        }
+        const double d2 = 2.0 * sy.half_d2f;
+        const double delta = -sy.df / d2;
+        const double w = 2.0 * std::fabs(delta);
+        const double m_low =
+            d2 - std::fabs(third_derivative(c, y)) * w - 12.0 * std::fabs(c[4]) * (w * w);
+        if (m_low > 0.0 && std::fabs(sy.df) <= m_low * w) {
+            const double bound = sy.f - sy.df * sy.df / (2.0 * m_low);
+            if (bound > 0.0 && bound > 8.0 * kEps * size(c, y)) return {Outcome::none};
+        }
+        if (have_r && !(r - l > kCriticalWidth * std::fabs(r))) return unsure();  // p(m) ≈ 0
+        y += delta;
+    }
+    return unsure();
+}
+
+}  // namespace
+
+Answer first_downward_crossing(const Poly4& c, double lo, double hi) {
+    double x = lo;
+    // p at x. At lo = 0 (the physics' case) the Taylor coefficients are the c_i themselves:
+    // the same values as sample() gives there, for finite ones, without its latency.
+    Sample sx;
+    if (lo == 0.0) {
+        for (const double ci : c) {
+            if (!std::isfinite(ci)) return unsure();
+        }
+        sx = {c[0], c[1], c[2]};
+    } else {
+        sx = sample(c, lo);
+    }
+    bool sampled = true;
+    if (!(sx.f > 0.0) || !std::isfinite(sx.f) || !std::isfinite(hi)) return unsure();
+
+    // The roots of p'' = 2c2 + 6c3·t + 12c4·t² inside (lo, hi), by the cancellation-free closed
+    // form (Press et al. §5.6): the one of smaller magnitude as c/q, the other from the vertex
+    // (a tiny c4 sends it far away, harmlessly).
+    double ends[3];
+    int n_ends = 0;
+    {
+        const double qa = 12.0 * c[4], qb = 6.0 * c[3], qc = 2.0 * c[2];
+        const double disc = qb * qb - 4.0 * qa * qc;
+        if (!std::isfinite(disc)) return unsure();
+        if (disc > 0.0) {
+            const double q = -0.5 * (qb + std::copysign(std::sqrt(disc), qb));
+            const double near = qc / q;
+            const double far = 2.0 * (-qb / (2.0 * qa)) - near;
+            const double r0 = near < far ? near : far, r1 = near < far ? far : near;
+            if (r0 > lo && r0 < hi) ends[n_ends++] = r0;
+            if (r1 > lo && r1 < hi && r1 != r0) ends[n_ends++] = r1;
+        }
+    }
+    ends[n_ends++] = hi;
+
+    for (int k = 0; k < n_ends; ++k) {
+        const double e = ends[k];
+        const double mid = x + 0.5 * (e - x);
+        const double curvature = (c[2] + (3.0 * c[3]) * mid) + (6.0 * c[4]) * (mid * mid);
+        if (curvature < 0.0) {  // concave: the minimum is at an end
+            const Sample se = sample(c, e);
+            if (se.f > 0.0) {
+                x = e;
+                sx = se;
+                sampled = true;
+                continue;
+            }
+            if (clearly_negative(c, e, se.f)) return refine(c, x, e, start_left_of(e, se));
+            return unsure();
+        }
+        if (!(curvature > 0.0)) return unsure();
+        if (!sampled) {  // (the pieces alternate, so this only guards against rounding)
+            sx = sample(c, x);
+            if (!(sx.f > 0.0)) return unsure();
+        }
+        const Answer piece = convex_piece(c, x, sx, e);
+        if (piece.outcome != Outcome::none) return piece;
+        // p > 0 up to e; the next piece is concave and needs only the value at its far end.
+        x = e;
+        sampled = false;
+    }
+    return {Outcome::none};
+}
+
+}  // namespace physics::roots::convex_pieces
