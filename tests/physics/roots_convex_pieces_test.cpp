@@ -15,12 +15,15 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "contact_quartics.hpp"
 #include "physics/roots.hpp"
 
 namespace physics::roots {
 namespace {
 
 using convex_pieces::Outcome;
+using test::kDiameter;
+using test::SplitMix64;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
@@ -57,44 +60,15 @@ TEST(RootsConvexPieces, WellConditionedRootsAreCorrectlyRounded) {
     EXPECT_GE(checked, 40);  // the fast path does answer most well-conditioned cases
 }
 
-/// SplitMix64, as in roots_test.cpp.
-struct SplitMix64 {
-    std::uint64_t state;
-    double uniform(double lo, double hi) {
-        std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        z ^= z >> 31;
-        return lo + (hi - lo) * static_cast<double>(z >> 11) * 0x1.0p-53;
-    }
-};
-
-/// Random two-ball contact quartics (as in roots_test.cpp, another seed, and some grazing by
+/// Random two-ball contact quartics (contact_quartics.hpp; another seed than roots_test.cpp, and every fifth grazing by
 /// 1e-3 to 1e-9 of the diameter): where the fast path answers, the walk (sign_change_roots)
 /// finds the same: no sign change for `none`, else its first sign change (a downward one, as
 /// p(0) > 0) at the same root up to the noise of its plain evaluation.
 TEST(RootsConvexPieces, AgreesWithTheWalk) {
-    constexpr double kDiameter = 2 * 0.028575;
     SplitMix64 rng{77031};
     int answered = 0, hits = 0;
     for (int k = 0; k < 20000; ++k) {
-        const double dist = rng.uniform(kDiameter * 1.001, 2.0), bearing = rng.uniform(0, 6.2832);
-        const double px = dist * std::cos(bearing), py = dist * std::sin(bearing);
-        const double speed = rng.uniform(0.01, 12.0);
-        double heading = bearing + rng.uniform(-0.1, 0.1) + (k % 2 ? 3.1416 : 0.0);
-        if (k % 5 == 0) {  // aim to pass at D·(1 − g): a grazing, near-double root
-            const double g = std::pow(10.0, -rng.uniform(3.0, 9.0));
-            heading = bearing + 3.14159265358979 + std::asin(kDiameter * (1 - g) / dist);
-        }
-        const double vx = -speed * std::cos(heading), vy = -speed * std::sin(heading);
-        const bool sliding = k % 3 != 0;
-        const double decel = sliding ? 2.0 : 0.1;
-        const double slip = sliding ? heading + rng.uniform(-1.0, 1.0) : heading;
-        const double ax = decel * std::cos(slip), ay = decel * std::sin(slip);
-        const Poly4 c{px * px + py * py - kDiameter * kDiameter, 2.0 * (px * vx + py * vy),
-                      vx * vx + vy * vy + px * ax + py * ay, vx * ax + vy * ay,
-                      0.25 * (ax * ax + ay * ay)};
-        const double hi = speed / decel;
+        const auto [c, hi] = test::random_contact_quartic(rng, k, kDiameter * 1.001, 5);
         const convex_pieces::Answer a = convex_pieces::first_downward_crossing(c, 0.0, hi);
         if (a.outcome == Outcome::unsure) continue;
         ++answered;

@@ -11,6 +11,7 @@
 //    samples p in double can promise for a near-double or triple root;
 //  * where the noise band holds one true sign change, exactly one root is reported there;
 //    where it holds a cluster (or a near-touch), the count has the same parity as the truth.
+#include "contact_quartics.hpp"
 #include "physics/roots.hpp"
 
 #include <gtest/gtest.h>
@@ -377,18 +378,7 @@ TEST(RootsSignChangeRoots, DegenerateDegrees) {
 
 // ------------------------------------------------------------------ property tests
 
-/// SplitMix64 (Steele, Lea, Flood 2014): deterministic on every platform, unlike <random>'s
-/// distributions.
-struct SplitMix64 {
-    std::uint64_t state;
-    double uniform(double lo, double hi) {
-        std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        z ^= z >> 31;
-        return lo + (hi - lo) * static_cast<double>(z >> 11) * 0x1.0p-53;
-    }
-};
+using test::SplitMix64;
 
 /// The sign of p at t where it is certain (|p| above the noise level), else 0.
 int clear_sign(const Poly4& c, double t) {
@@ -400,24 +390,11 @@ int clear_sign(const Poly4& c, double t) {
 /// (2 m/s², along a random slip direction) or rolling (0.1 m/s², against the velocity), aimed
 /// roughly at each other so that about half collide, some of them grazing.
 TEST(RootsProperty, ContactQuarticsHaveNoMissedEarlierCrossing) {
-    constexpr double kDiameter = 2 * 0.028575;
     constexpr int kGrid = 256;
     SplitMix64 rng{20240611};
     int collisions = 0;
     for (int k = 0; k < 4000; ++k) {
-        const double dist = rng.uniform(kDiameter, 2.0), bearing = rng.uniform(0, 6.2832);
-        const double px = dist * std::cos(bearing), py = dist * std::sin(bearing);
-        const double speed = rng.uniform(0.01, 12.0);
-        const double heading = bearing + rng.uniform(-0.1, 0.1) + (k % 2 ? 3.1416 : 0.0);
-        const double vx = -speed * std::cos(heading), vy = -speed * std::sin(heading);
-        const bool sliding = k % 3 != 0;
-        const double decel = sliding ? 2.0 : 0.1;
-        const double slip = sliding ? heading + rng.uniform(-1.0, 1.0) : heading;
-        const double ax = decel * std::cos(slip), ay = decel * std::sin(slip);
-        const Poly4 c{px * px + py * py - kDiameter * kDiameter, 2.0 * (px * vx + py * vy),
-                      vx * vx + vy * vy + px * ax + py * ay, vx * ax + vy * ay,
-                      0.25 * (ax * ax + ay * ay)};
-        const double hi = speed / decel;
+        const auto [c, hi] = test::random_contact_quartic(rng, k, test::kDiameter);
         SCOPED_TRACE(::testing::Message() << "case " << k);
         const double t = first_downward_crossing(c, 0.0, hi);
         int last_clear = clear_sign(c, 0.0);
