@@ -60,10 +60,11 @@ TEST(RootsConvexPieces, WellConditionedRootsAreCorrectlyRounded) {
     EXPECT_GE(checked, 40);  // the fast path does answer most well-conditioned cases
 }
 
-/// Random two-ball contact quartics (contact_quartics.hpp; another seed than roots_test.cpp, and every fifth grazing by
-/// 1e-3 to 1e-9 of the diameter): where the fast path answers, the walk (sign_change_roots)
-/// finds the same: no sign change for `none`, else its first sign change (a downward one, as
-/// p(0) > 0) at the same root up to the noise of its plain evaluation.
+/// Random two-ball contact quartics (contact_quartics.hpp; another seed than roots_test.cpp,
+/// and every fifth grazing by 1e-3 to 1e-9 of the diameter): where the fast path answers, the
+/// walk (sign_change_roots) finds the same: no sign change for `none`, else its first sign
+/// change (a downward one, as p(0) > 0) at the same root up to the noise of its plain
+/// evaluation.
 TEST(RootsConvexPieces, AgreesWithTheWalk) {
     SplitMix64 rng{77031};
     int answered = 0, hits = 0;
