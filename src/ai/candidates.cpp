@@ -33,10 +33,11 @@ constexpr std::array<Spin, 9> spins{{{0.0, 0.0},
 constexpr std::array<double, 7> pot_speed_factors{1.3, 2.1, 1.0, 3.2, 4.6, 1.65, 2.6};
 constexpr std::array<double, 5> safety_speeds{0.55, 1.0, 1.7, 2.6, 4.0};  // (unit: m/s)
 constexpr std::array<double, 2> kick_speeds{1.6, 3.2};                    // (unit: m/s)
-constexpr double min_speed = 0.25, max_speed = 8.0;                      // (unit: m/s)
-constexpr double max_variant_offset = 0.44;  // a variant's tip offset stays this far from centre: 3σ inside the miscue limit (unit: R)
-constexpr double roll_decel = 0.0981;  // μ_roll·g of the default parameters (unit: m/s²)
-constexpr double arrival_speed = 0.35;  // object ball speed wanted at the pocket (unit: m/s)
+constexpr double min_speed = 0.25, max_speed = 8.0;                       // (unit: m/s)
+constexpr double max_variant_offset = 0.44;  // a variant's tip offset stays this far from centre:
+                                             // 3σ inside the miscue limit (unit: R)
+constexpr double roll_decel = 0.0981;        // μ_roll·g of the default parameters (unit: m/s²)
+constexpr double arrival_speed = 0.35;       // object ball speed wanted at the pocket (unit: m/s)
 
 // The cue speed that gets the object ball of `aim` to its pocket with `arrival_speed`: sliding
 // costs a ball about 2/7 of its speed, rolling μ_roll·g per metre (physics-model.md).
@@ -78,7 +79,8 @@ std::vector<RankedAim> ranked_aims(const Position& pos, Vec2 cue, double sigma_d
     std::vector<RankedAim> aims;
     for (int ball : target_balls(pos.ruleset, pos.state))
         for (int pocket = 0; pocket < 6; ++pocket)
-            if (std::optional<Aim> a = direct_aim(pos.table, R, cue, ball, pocket, pos.state.positions))
+            if (std::optional<Aim> a =
+                    direct_aim(pos.table, R, cue, ball, pocket, pos.state.positions))
                 aims.push_back({*a, aim_chance(*a, R, sigma_deg)});
     std::stable_sort(aims.begin(), aims.end(),
                      [](const RankedAim& a, const RankedAim& b) { return a.chance > b.chance; });
@@ -90,7 +92,8 @@ std::vector<Candidate> pot_strokes(const Position& pos, Vec2 cue, bool in_hand, 
     std::vector<Candidate> out;
     const Vec2 object = pos.state.positions.at(r.aim.ball);
     const double base = base_pot_speed(pos.params, r.aim);
-    for (int k = 0; k < std::min<int>(effort.speeds, static_cast<int>(pot_speed_factors.size())); ++k)
+    for (int k = 0; k < std::min<int>(effort.speeds, static_cast<int>(pot_speed_factors.size()));
+         ++k)
         for (int j = 0; j < std::min<int>(effort.spins, static_cast<int>(spins.size())); ++j) {
             Candidate c;
             c.kind = Kind::pot;
@@ -161,7 +164,9 @@ std::vector<Candidate> safety_candidates(const Position& pos, Vec2 cue, bool in_
         for (int i = 0; i < n; ++i) {
             const double f = n == 1 ? 0.0 : -0.85 + 1.7 * i / (n - 1);
             const double turn = std::asin(std::clamp(f * 2.0 * R / d, -1.0, 1.0)) / deg;
-            for (int k = 0; k < std::min<int>(effort.safety_speeds, static_cast<int>(safety_speeds.size())); ++k) {
+            for (int k = 0;
+                 k < std::min<int>(effort.safety_speeds, static_cast<int>(safety_speeds.size()));
+                 ++k) {
                 Candidate c;
                 c.kind = Kind::safety;
                 c.cue_pos = spot(in_hand, cue);

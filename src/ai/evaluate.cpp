@@ -83,19 +83,19 @@ Trial Evaluator::play(const Candidate& c, const physics::Stroke& stroke, bool as
     t.foul = v.foul;
     const bool won = v.game_over && v.winner == me;
     const bool lost = v.game_over && v.winner != me;
-    const bool stays = !v.game_over && ((v.choice && v.choice->by == me) ||
-                                        (!v.choice && v.next_shooter == me));
+    const bool stays =
+        !v.game_over && ((v.choice && v.choice->by == me) || (!v.choice && v.next_shooter == me));
     t.shallow = verdict_value(pos_, s, v, sigma_deg_);
     t.value = t.shallow;
     if (deeper && stays && !v.choice) {
         const std::size_t down =
             s.on_table.size() - std::min(s.on_table.size(), v.state.on_table.size());
-        t.value = std::min(1.0, next_turn_value(pos_, v.state, *deeper, scale_, sigma_deg_,
-                                                t.simulations) +
-                                    progress_bonus * static_cast<double>(std::min<std::size_t>(down, 2)));
+        t.value = std::min(
+            1.0, next_turn_value(pos_, v.state, *deeper, scale_, sigma_deg_, t.simulations) +
+                     progress_bonus * static_cast<double>(std::min<std::size_t>(down, 2)));
     }
-    const bool pot_like =
-        c.kind == Kind::pot || c.kind == Kind::break_shot || (c.kind == Kind::kick && s.call.is_ball());
+    const bool pot_like = c.kind == Kind::pot || c.kind == Kind::break_shot ||
+                          (c.kind == Kind::kick && s.call.is_ball());
     t.success = pot_like ? (won || stays) : (!v.foul && !lost);
     return t;
 }
@@ -134,7 +134,8 @@ std::int64_t score_under_noise(const Evaluator& eval, const std::vector<Candidat
     });
     std::int64_t sims = 0;
     for (std::size_t k = 0; k < which.size(); ++k)
-        sims += static_cast<std::int64_t>(std::min(count, draws.size() - std::min(first, draws.size())));
+        sims += static_cast<std::int64_t>(
+            std::min(count, draws.size() - std::min(first, draws.size())));
     return sims;
 }
 

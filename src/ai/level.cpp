@@ -6,6 +6,8 @@
 namespace ai {
 
 Effort effort_for_level(int level) {
+    // One level per block reads better than one field per line.
+    // clang-format off
     static constexpr std::array<Effort, 5> levels{{
         {.noise_multiplier = 4.0, .pot_pairs = 3, .speeds = 2, .spins = 1, .safety_speeds = 2,
          .safety_contacts = 3, .sweep_headings = 36, .shortlist = 4, .samples = 4, .finalists = 1,
@@ -26,6 +28,7 @@ Effort effort_for_level(int level) {
          .placements = 6, .break_samples = 12, .polish = 4, .deep_finalists = 8, .deep_samples = 16,
          .next_pairs = 3, .next_speeds = 4, .next_spins = 4},
     }};
+    // clang-format on
     return levels[static_cast<std::size_t>(std::clamp(level, min_level, max_level) - 1)];
 }
 

@@ -10,7 +10,8 @@ inline constexpr int max_level = 5;
 
 /// Search effort of one level. Counts are per decision unless stated.
 struct Effort {
-    double noise_multiplier = 1.0;  ///< the player's own execution noise, × the game's scale (unit: 1)
+    double noise_multiplier =
+        1.0;                  ///< the player's own execution noise, × the game's scale (unit: 1)
     int pot_pairs = 6;        ///< (ball, pocket) pairs tried, the easiest first
     int speeds = 3;           ///< speeds per aim
     int spins = 3;            ///< spins per aim (follow, stun, draw, then side)

@@ -95,12 +95,14 @@ std::size_t choose_under_noise(Search& s, std::vector<Candidate>& cands,
         noisy.resize(cands.size());
         std::vector<std::size_t> added(cands.size() - from);
         std::iota(added.begin(), added.end(), from);
-        s.simulations += score_under_noise(s.eval, cands, added, s.draws, 0, drawn, noisy, s.workers);
+        s.simulations +=
+            score_under_noise(s.eval, cands, added, s.draws, 0, drawn, noisy, s.workers);
         list.insert(list.end(), added.begin(), added.end());
     }
     if (deeper && s.effort.deep_finalists > 0) {
         list = best_of(noisy, list, static_cast<std::size_t>(s.effort.deep_finalists));
-        const std::size_t m = s.eval.scale() == 0.0 ? 1 : static_cast<std::size_t>(s.effort.deep_samples);
+        const std::size_t m =
+            s.eval.scale() == 0.0 ? 1 : static_cast<std::size_t>(s.effort.deep_samples);
         s.simulations += score_deep(s.eval, cands, list, s.draws, m, s.effort, noisy, s.workers);
     }
     return best_of(noisy, list, 1).front();
@@ -136,8 +138,8 @@ Plan plan_break(Search& s) {
     std::vector<Score> scores(cands.size());
     const std::size_t n =
         s.eval.scale() == 0.0 ? 1 : static_cast<std::size_t>(s.effort.break_samples);
-    s.simulations +=
-        score_under_noise(s.eval, cands, all_indices(cands.size()), s.draws, 0, n, scores, s.workers);
+    s.simulations += score_under_noise(s.eval, cands, all_indices(cands.size()), s.draws, 0, n,
+                                       scores, s.workers);
     const std::size_t best = best_of(scores, all_indices(cands.size()), 1).front();
     Plan p;
     p.decision = decision_of(cands[best]);
@@ -173,7 +175,8 @@ Plan plan(const Position& pos, const PlanSettings& settings, std::uint64_t seed)
 
     std::vector<Candidate> cands;
     for (physics::Vec2 cue : spots) {
-        std::vector<Candidate> pots = pot_candidates(pos, cue, in_hand, effort, sigma_deg, s.simulations);
+        std::vector<Candidate> pots =
+            pot_candidates(pos, cue, in_hand, effort, sigma_deg, s.simulations);
         std::vector<Candidate> safe = safety_candidates(pos, cue, in_hand, effort);
         cands.insert(cands.end(), pots.begin(), pots.end());
         cands.insert(cands.end(), safe.begin(), safe.end());
@@ -187,7 +190,8 @@ Plan plan(const Position& pos, const PlanSettings& settings, std::uint64_t seed)
         return best;
     };
     const bool pot_works = std::any_of(cands.begin(), cands.end(), [&](const Candidate& c) {
-        return c.kind == Kind::pot && nominal[static_cast<std::size_t>(&c - cands.data())].success > 0.0;
+        return c.kind == Kind::pot &&
+               nominal[static_cast<std::size_t>(&c - cands.data())].success > 0.0;
     });
     if (legal_best() < good_enough || !pot_works) {
         const std::size_t from = cands.size();
@@ -209,8 +213,8 @@ Plan plan(const Position& pos, const PlanSettings& settings, std::uint64_t seed)
     }
 
     std::vector<Score> noisy;
-    const std::size_t best =
-        choose_under_noise(s, cands, nominal, noisy, static_cast<std::size_t>(effort.shortlist), true);
+    const std::size_t best = choose_under_noise(s, cands, nominal, noisy,
+                                                static_cast<std::size_t>(effort.shortlist), true);
     Candidate chosen = cands[best];
     double chosen_value = noisy[best].value, chosen_success = noisy[best].success;
 
@@ -220,8 +224,9 @@ Plan plan(const Position& pos, const PlanSettings& settings, std::uint64_t seed)
         std::vector<Score> push_nominal;
         score_nominal(s, pushes, push_nominal, 0);
         std::vector<Score> push_noisy;
-        const std::size_t p = choose_under_noise(s, pushes, push_nominal, push_noisy,
-                                                 static_cast<std::size_t>(effort.shortlist / 2 + 1), false);
+        const std::size_t p =
+            choose_under_noise(s, pushes, push_nominal, push_noisy,
+                               static_cast<std::size_t>(effort.shortlist / 2 + 1), false);
         if (push_noisy[p].value > chosen_value) {
             chosen = pushes[p];
             chosen_value = push_noisy[p].value;

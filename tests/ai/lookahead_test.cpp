@@ -1,13 +1,14 @@
 // The second ply (lookahead.hpp) and the finer search around the best pots (pot_variants): a
 // table with nothing on is worth exactly a safety, a sure game-winning pot nearly a win, a long
 // one less; variants stay near the pot they come from and inside the miscue limit.
+#include "ai/lookahead.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "ai/candidates.hpp"
 #include "ai/level.hpp"
-#include "ai/lookahead.hpp"
 #include "ai/table_value.hpp"
 #include "ai_support.hpp"
 
@@ -37,9 +38,13 @@ TEST(NextTurnValue, NothingOnIsWorthASafety) {
     const Vec2 one{1.27, 0.635};
     const double g = 2.0 * 0.028575 + 1e-4;
     ai::Position pos = position(Game::nine_ball, {1, 2, 3, 4, 5, 9},
-                                {{0, {0.4, 0.3}}, {1, one}, {2, one + Vec2{g, 0}},
-                                 {3, one + Vec2{-g, 0}}, {4, one + Vec2{0, g}},
-                                 {5, one + Vec2{0, -g}}, {9, {2.2, 1.0}}});
+                                {{0, {0.4, 0.3}},
+                                 {1, one},
+                                 {2, one + Vec2{g, 0}},
+                                 {3, one + Vec2{-g, 0}},
+                                 {4, one + Vec2{0, g}},
+                                 {5, one + Vec2{0, -g}},
+                                 {9, {2.2, 1.0}}});
     EXPECT_EQ(value_of(pos), ai::table_value(0.0));
 }
 
