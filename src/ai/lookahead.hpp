@@ -1,8 +1,9 @@
 // The second ply: what a table is worth to the player who stays at it, found by playing his best
 // few next pots without noise and valuing what each leaves (table_value.hpp, one ply further),
-// weighted by each pot's analytic chance (ghost_ball.hpp). It replaces the one-shot estimate
-// T(q) of table_value.hpp for the finalists of a decision: a shot that leaves an easy pot with no
-// way on to the ball after is worth less than one that leaves a route.
+// weighted by each pot's analytic chance (ghost_ball.hpp). For the finalists of a decision it
+// corrects the one-shot estimate T(q) of table_value.hpp (by the mean difference on the same
+// draws: evaluate.hpp's score_deep): a shot that leaves an easy pot with no way on to the ball
+// after is worth less than one that leaves a route.
 #pragma once
 
 #include <cstdint>
