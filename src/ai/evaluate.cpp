@@ -88,11 +88,8 @@ Trial Evaluator::play(const Candidate& c, const physics::Stroke& stroke, bool as
     t.shallow = verdict_value(pos_, s, v, sigma_deg_);
     t.value = t.shallow;
     if (deeper && stays && !v.choice) {
-        const std::size_t down =
-            s.on_table.size() - std::min(s.on_table.size(), v.state.on_table.size());
-        t.value = std::min(
-            1.0, next_turn_value(pos_, v.state, *deeper, scale_, sigma_deg_, t.simulations) +
-                     progress_bonus * static_cast<double>(std::min<std::size_t>(down, 2)));
+        t.value = staying_value(
+            s, v.state, next_turn_value(pos_, v.state, *deeper, scale_, sigma_deg_, t.simulations));
     }
     const bool pot_like = c.kind == Kind::pot || c.kind == Kind::break_shot ||
                           (c.kind == Kind::kick && s.call.is_ball());

@@ -31,7 +31,8 @@ double best_in_hand_anywhere(const Position& base, const rules::GameState& s, do
                 for (const auto& [id, p] : s.positions)
                     if (id != 0 && physics::norm(p - cue) < 2.0 * R + 1e-6) free = false;
                 if (!free) continue;
-                if (std::optional<Aim> a = direct_aim(base.table, R, cue, ball, pocket, s.positions))
+                if (std::optional<Aim> a =
+                        direct_aim(base.table, R, cue, ball, pocket, s.positions))
                     best = std::max(best, aim_chance(*a, R, sigma_deg));
                 break;
             }
@@ -41,8 +42,8 @@ double best_in_hand_anywhere(const Position& base, const rules::GameState& s, do
 
 }  // namespace
 
-std::optional<BestAim> best_aim(const Position& base, const rules::GameState& s,
-                                physics::Vec2 cue, double sigma_deg) {
+std::optional<BestAim> best_aim(const Position& base, const rules::GameState& s, physics::Vec2 cue,
+                                double sigma_deg) {
     const double R = base.params.ball_radius;
     std::optional<BestAim> best;
     for (int ball : target_balls(base.ruleset, s))
@@ -118,8 +119,14 @@ double verdict_value(const Position& base, const rules::GameState& before, const
     }
     const double value = table_value(best_shot_chance(base, v.state, sigma_deg));
     if (v.next_shooter != me) return 1.0 - value;
-    const std::size_t down = before.on_table.size() - std::min(before.on_table.size(), v.state.on_table.size());
-    return std::min(1.0, value + progress_bonus * static_cast<double>(std::min<std::size_t>(down, 2)));
+    return staying_value(before, v.state, value);
+}
+
+double staying_value(const rules::GameState& before, const rules::GameState& after, double value) {
+    const std::size_t down =
+        before.on_table.size() - std::min(before.on_table.size(), after.on_table.size());
+    return std::min(1.0,
+                    value + progress_bonus * static_cast<double>(std::min<std::size_t>(down, 2)));
 }
 
 }  // namespace ai

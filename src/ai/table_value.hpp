@@ -19,8 +19,8 @@ struct BestAim {
     Aim aim;
     double chance = 0.0;
 };
-std::optional<BestAim> best_aim(const Position& base, const rules::GameState& s,
-                                physics::Vec2 cue, double sigma_deg);
+std::optional<BestAim> best_aim(const Position& base, const rules::GameState& s, physics::Vec2 cue,
+                                double sigma_deg);
 
 /// A rough chance of winning for the player at the table whose best shot has chance `q`: with
 /// nothing on he plays safe and the game is about even; with a sure shot he is well ahead.
@@ -34,6 +34,10 @@ inline constexpr double progress_bonus = 0.02;
 /// state that the first option leads to.
 double option_value(const Position& base, const rules::GameState& first_option_state,
                     rules::ChoiceOption option, rules::Player chooser, double sigma_deg);
+
+/// What staying at the table from `before` to `after` is worth to the shooter whose table is
+/// worth `value` to him: `value` plus the progress bonus for the balls pocketed (at most 1).
+double staying_value(const rules::GameState& before, const rules::GameState& after, double value);
 
 /// What a verdict is worth to `me` (the shooter of the shot from `before`): 1 won, 0 lost, else
 /// the value of the table to whoever has it next (with a bonus for balls pocketed when it is me).
