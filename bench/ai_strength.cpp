@@ -75,6 +75,33 @@ ai::Position base_position(rules::Game game) {
     return p;
 }
 
+// AI_VERBOSE=1: one line per shot on stderr (for failure analysis): the best pot's chance from
+// the cue ball and from anywhere (ball in hand), what was played, the verdict; with
+// AI_VERBOSE_LAYOUT=1 also every ball's position and player A's group.
+void print_shot(const ai::Position& pos, const ai::Plan& plan, const rules::GameState& s,
+                const physics::Stroke& stroke, const rules::Verdict& v) {
+    rules::GameState anywhere = pos.state;  // the same table with the cue ball in hand
+    anywhere.cue_ball = rules::CueBall::in_hand;
+    anywhere.positions.erase(0);
+    std::fprintf(stderr, "in_hand_q %.2f ",
+                 ai::best_shot_chance(pos, anywhere, ai::heading_sigma_deg));
+    if (std::getenv("AI_VERBOSE_LAYOUT")) {
+        std::fprintf(stderr, "layout");
+        for (const auto& [id, p] : pos.state.positions)
+            std::fprintf(stderr, " %d:%.4f,%.4f", id, p.x, p.y);
+        std::fprintf(stderr, " group_a %d ",
+                     pos.state.group_a ? static_cast<int>(*pos.state.group_a) : -1);
+    }
+    std::fprintf(stderr,
+                 "q %.2f kind %d balls %zu call %d/%d speed %.2f side %.2f top %.2f exp %.2f "
+                 "sims %lld -> foul %d next %d over %d\n",
+                 ai::best_shot_chance(pos, pos.state, ai::heading_sigma_deg),
+                 static_cast<int>(plan.kind), pos.state.on_table.size(), s.call.ball,
+                 s.call.pocket, stroke.speed, stroke.side, stroke.top, plan.expected_success,
+                 static_cast<long long>(plan.simulations), v.foul ? 1 : 0,
+                 v.next_shooter ? static_cast<int>(*v.next_shooter) : -1, v.game_over ? 1 : 0);
+}
+
 // One shot: plan, execute with the game's noise, simulate, judge.
 struct Played {
     rules::Verdict verdict;
@@ -95,12 +122,7 @@ Played play(const ai::Position& pos, const ai::PlanSettings& settings, std::uint
     const physics::Shot shot = physics::simulate(pos.table, pos.params,
                                                  ai::layout(s, s.positions.at(0)), &stroke);
     rules::Verdict v = rules::judge(pos.ruleset, s, shot.events());
-    if (std::getenv("AI_VERBOSE"))
-        std::fprintf(stderr, "q %.2f kind %d balls %zu call %d/%d speed %.2f side %.2f top %.2f exp %.2f sims %lld -> foul %d next %d over %d\n",
-                     ai::best_shot_chance(pos, pos.state, ai::heading_sigma_deg),
-                     static_cast<int>(plan.kind), pos.state.on_table.size(), s.call.ball, s.call.pocket, stroke.speed, stroke.side, stroke.top,
-                     plan.expected_success, static_cast<long long>(plan.simulations), v.foul ? 1 : 0,
-                     v.next_shooter ? static_cast<int>(*v.next_shooter) : -1, v.game_over ? 1 : 0);
+    if (std::getenv("AI_VERBOSE")) print_shot(pos, plan, s, stroke, v);
     return {v};
 }
 
