@@ -72,44 +72,40 @@ bool clearly_negative(const Poly4& c, double t, double f) {
     return f < 0.0 && -f > 4.0 * kEps * size(c, t);
 }
 
-/// x·y = p + e exactly (Dekker 1971, without FMA; the build forbids contraction), and x + y.
-struct Exact {
-    double p, e;
+/// x = h + l exactly, each of 26 bits (Dekker 1971, without FMA: the build forbids contraction).
+struct Split {
+    double h, l;
 };
-Exact split(double x) {
-    const double c = 134217729.0 * x;  // 2^27 + 1: x = h + l, each of 26 bits
+Split split(double x) {
+    const double c = 134217729.0 * x;  // 2^27 + 1
     const double h = c - (c - x);
     return {h, x - h};
 }
-Exact two_product(double x, const Exact& y, double y_full) {
-    const double p = x * y_full;
-    const Exact xs = split(x);
-    return {p, ((xs.p * y.p - p) + xs.p * y.e + xs.e * y.p) + xs.e * y.e};
-}
-Exact two_sum(double a, double b) {
-    const double s = a + b, bb = s - a;
-    return {s, (a - (s - bb)) + (b - bb)};
-}
 
-/// p(t) as accurately as if computed in twice the precision, then rounded: Estrin's form with
-/// every product and sum replaced by its error-free transformation, the errors carried along
-/// and added at the end (the compensated schemes of S. Graillat, Ph. Langlois, N. Louvet,
-/// "Compensated Horner scheme", 2005, in Estrin's order for a shorter chain). The result's
-/// error is about ε·|p(t)| + O(ε²)·Σ|c_i||t|^i. Non-finite if a split overflows (|·| > 2^996).
+/// p(t) as accurately as if computed in twice the precision, then rounded: the compensated
+/// Horner scheme of S. Graillat, Ph. Langlois, N. Louvet ("Compensated Horner scheme", 2005,
+/// Algorithm 3.2): at each step s·t + c_i, the error of the product (Dekker's TwoProduct) and of
+/// the sum (Knuth's TwoSum) are exact doubles, and they are summed by their own Horner
+/// recurrence, added at the end. Its error is below ε·|p(t)| + γ_8²·Σ|c_i||t|^i (their
+/// Theorem 3.1). Horner's order, not Estrin's: one running value and one running error keep
+/// every intermediate in a register (the Estrin form needed twice as many, and spilled), and its
+/// chain (a product and a sum per step, the error terms beside it) is as short. Non-finite if a
+/// split overflows (|·| > 2^996).
 double accurate_value(const Poly4& c, double t) {
-    const Exact ts = split(t);
-    const Exact t2 = two_product(t, ts, t);  // t² = t2.p + t2.e
-    const Exact t2s = split(t2.p);
-    const Exact c1t = two_product(c[1], ts, t);
-    const Exact a = two_sum(c[0], c1t.p);  // c0 + c1·t
-    const Exact c3t = two_product(c[3], ts, t);
-    const Exact b1 = two_sum(c[2], c3t.p);  // c2 + c3·t
-    const Exact c4t2 = two_product(c[4], t2s, t2.p);
-    const Exact b = two_sum(b1.p, c4t2.p);  // (c2 + c3·t) + c4·t²
-    const double b_error = b.e + ((b1.e + c3t.e) + (c4t2.e + c[4] * t2.e));
-    const Exact t2b = two_product(b.p, t2s, t2.p);
-    const Exact s = two_sum(a.p, t2b.p);
-    return s.p + (s.e + ((a.e + c1t.e) + (t2b.e + (t2.p * b_error + t2.e * b.p))));
+    const Split ts = split(t);
+    double s = c[4], error = 0.0;
+    for (int i = 3; i >= 0; --i) {
+        const double product = s * t;
+        const Split ss = split(s);
+        const double product_error =
+            ((ss.h * ts.h - product) + ss.h * ts.l + ss.l * ts.h) + ss.l * ts.l;
+        const double sum = product + c[i];
+        const double z = sum - product;
+        const double sum_error = (product - (sum - z)) + (c[i] - z);
+        error = (i == 3 ? 0.0 : error * t) + (product_error + sum_error);
+        s = sum;
+    }
+    return s + error;
 }
 
 Answer unsure() {
@@ -117,14 +113,34 @@ Answer unsure() {
 }
 
 /// Where to start in a bracket [a, y] with p(y) = s.f < 0: the nearer root of the Taylor
-/// parabola at y, p + p'·u + (p''/2)·u² = 0 going left (u = y − t ≥ 0), in the cancellation-free
-/// form 2|p| / (−p' + √(p'² − 2p·p'')). It is exact for a quadratic and close for a grazing
-/// contact, whose root sits near the minimum. (NaN where it has none: then the midpoint.)
+/// parabola at y, p − p'·u + (p''/2)·u² = 0 going left (u = y − t ≥ 0), for p'' > 0 as
+/// (p' + √(p'² − 2p·p''))/p'', a product by a reciprocal computed beside the square root, so that
+/// only a sum and a product wait for it: free of cancellation where p' ≥ 0, and losing at most
+/// 12 bits where −2p·p'' ≥ 2⁻¹⁰·p'² (near the minimum, as at a grazing contact); else as
+/// 2|p| / (−p' + √…). It is exact for a quadratic and close for a grazing contact, whose root
+/// sits near the minimum. (NaN where it has none: then the midpoint.)
 double start_left_of(double y, const Sample& s) {
     const double disc = s.df * s.df - 4.0 * s.half_d2f * s.f;
     if (!(disc >= 0.0)) return kNaN;
+    if (s.half_d2f > 0.0 && (s.df >= 0.0 || -4.0 * s.half_d2f * s.f >= 0x1p-10 * (s.df * s.df))) {
+        const double inverse_d2f = 0.5 / s.half_d2f;
+        return y - (s.df + std::sqrt(disc)) * inverse_d2f;
+    }
     const double denominator = -s.df + std::sqrt(disc);
     return denominator > 0.0 ? y - 2.0 * -s.f / denominator : kNaN;
+}
+
+/// The step from x to the nearer root of the Taylor parabola of p' there, d1 + d2·v + (d3/2)·v²
+/// (d1 = p' < 0 < d2 = p'', d3 = p''', disc = d2² − 2·d1·d3 ≥ 0): −2·d1 / (d2 + √disc), free of
+/// cancellation; or, where |2·d1·d3| ≥ 2⁻²⁰·d2² (then √disc − d2 loses at most 23 of its bits,
+/// enough for a point to sample), (√disc − d2)/d3, whose reciprocal is computed beside the
+/// square root, so that only a sum and a product wait for it.
+double newton_on_slope(double d1, double d2, double d3, double disc) {
+    if (std::fabs(2.0 * d1 * d3) >= 0x1p-20 * (d2 * d2) && d2 > 0.0) {
+        const double inverse_d3 = 1.0 / d3;
+        return (std::sqrt(disc) - d2) * inverse_d3;
+    }
+    return -2.0 * d1 / (d2 + std::sqrt(disc));
 }
 
 /// Halley's step at a sample: x − p·p' / (p'² − p·p''/2).
@@ -132,12 +148,17 @@ double halley_step(const Sample& s) {
     return s.f * s.df / (s.df * s.df - s.f * s.half_d2f);
 }
 
-/// Halley's last step from x, with the compensated value of p (where it is finite), kept in
-/// [a, b].
-double last_step(const Poly4& c, double x, Sample s, double a, double b) {
-    const double f = accurate_value(c, x);
-    if (std::isfinite(f)) s.f = f;
-    const double step = halley_step(s);
+/// The last step from x, with the compensated value f of p there (where it is finite): Chebyshev's
+/// step n + n²·(p''/2)/p', n = f/p', the same order (cubic) as Halley's and, for the tiny last
+/// step, the same to far below an ulp of x; its reciprocal 1/p' does not wait for f, so the step
+/// is two products and a sum after f (Halley's division waits for it). Kept in [a, b].
+double last_step(const Poly4& c, double x, const Sample& s, double a, double b) {
+    const double inverse_slope = 1.0 / s.df;
+    const double bend = s.half_d2f * inverse_slope;
+    const double accurate = accurate_value(c, x);
+    const double f = std::isfinite(accurate) ? accurate : s.f;
+    const double n = f * inverse_slope;
+    const double step = n + n * (n * bend);
     const double t = std::isfinite(step) ? x - step : x;
     return t < a ? a : (t > b ? b : t);
 }
@@ -163,7 +184,7 @@ Answer refine(const Poly4& c, double a, double b, double x0) {
         const double step = halley_step(s);
         const double next = x - step;
         const double gain =
-            2.0 * (s.half_d2f * s.half_d2f + std::fabs(third_derivative(c, x) * s.df) / 6.0) /
+            (2.0 * (s.half_d2f * s.half_d2f) + std::fabs(third_derivative(c, x) * s.df) / 3.0) /
             (s.df * s.df);                                            // 2A
         const double error = gain * (step * step) * std::fabs(step);  // of next
         const double tolerance = 0.1 * kEps * std::fabs(x);
@@ -205,7 +226,7 @@ Answer convex_piece(const Poly4& c, double x, Sample sl, double e) {
             start = x + u;
             y = x + (1.0 + 0x1p-20) * u;
         } else if (disc_d >= 0.0) {
-            y = x + -2.0 * d1 / (d2 + std::sqrt(disc_d));
+            y = x + newton_on_slope(d1, d2, d3, disc_d);
         } else {
             y = x - d1 / d2;
         }
