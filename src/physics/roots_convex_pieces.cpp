@@ -151,7 +151,8 @@ double halley_step(const Sample& s) {
 /// The last step from x, with the compensated value f of p there (where it is finite): Chebyshev's
 /// step n + n²·(p''/2)/p', n = f/p', the same order (cubic) as Halley's and, for the tiny last
 /// step, the same to far below an ulp of x; its reciprocal 1/p' does not wait for f, so the step
-/// is two products and a sum after f (Halley's division waits for it). Kept in [a, b].
+/// is two products and a sum after f (Halley's division waits for it). Kept in [a, b]. s: p, p'
+/// and p''/2 at x in plain arithmetic (p only where the compensated value overflows).
 double last_step(const Poly4& c, double x, const Sample& s, double a, double b) {
     const double inverse_slope = 1.0 / s.df;
     const double bend = s.half_d2f * inverse_slope;
@@ -192,11 +193,19 @@ Answer refine(const Poly4& c, double a, double b, double x0) {
             return {Outcome::root, last_step(c, x, s, a0, b0)};
         }
         const bool in = next > a && next < b;
+        if (in && gain * (error * error) * error <= tolerance) {
+            // The step from next is the last: it needs p' and p''/2 there, which the Taylor
+            // expansion at x gives from what is known (d = next − x is tiny), without the
+            // latency and the instructions of another sample.
+            const double d = next - x, d3f = third_derivative(c, x);
+            const double half_d3f = 0.5 * d3f;
+            const Sample at_next{s.f + d * (s.df + d * s.half_d2f),
+                                 s.df + d * (2.0 * s.half_d2f + d * (half_d3f + d * (4.0 * c[4]))),
+                                 s.half_d2f + d * (half_d3f + d * (6.0 * c[4]))};
+            return {Outcome::root, last_step(c, next, at_next, a0, b0)};
+        }
         x = in ? next : a + 0.5 * (b - a);
         s = sample(c, x);
-        if (in && gain * (error * error) * error <= tolerance) {
-            return {Outcome::root, last_step(c, x, s, a0, b0)};
-        }
     }
     return unsure();
 }
@@ -282,12 +291,12 @@ Answer convex_piece(const Poly4& c, double x, Sample sl, double e) {
 Answer first_downward_crossing(const Poly4& c, double lo, double hi) {
     double x = lo;
     // p at x. At lo = 0 (the physics' case) the Taylor coefficients are the c_i themselves:
-    // the same values as sample() gives there, for finite ones, without its latency.
+    // the same values as sample() gives there, for finite ones, without its latency. Only c1
+    // is checked here: a non-finite c0 fails the test of p(lo) below, and a non-finite c2, c3
+    // or c4 (c4 ≠ 0) makes the discriminant of p'' non-finite, which is answered `unsure`.
     Sample sx;
     if (lo == 0.0) {
-        for (const double ci : c) {
-            if (!std::isfinite(ci)) return unsure();
-        }
+        if (!std::isfinite(c[1])) return unsure();
         sx = {c[0], c[1], c[2]};
     } else {
         sx = sample(c, lo);
