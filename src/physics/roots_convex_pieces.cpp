@@ -164,6 +164,18 @@ double last_step(const Poly4& c, double x, const Sample& s, double a, double b) 
     return t < a ? a : (t > b ? b : t);
 }
 
+/// p'' > 0 on [0, y] (y > 0, c4 > 0; sy: the sample at y), shown by one of: p''/2 = c2 + 3c3·t +
+/// 6c4·t² rising from c2 > 0 (c3 ≥ 0); its discriminant negative; or its vertex −c3/(4c4) at or
+/// beyond y, so that it falls on [0, y] to p''(y)/2 > 0. The margins (2⁻²⁰ relative) are far
+/// above the rounding of these few operations.
+bool convex_up_to(const Poly4& c, double y, const Sample& sy) {
+    if (!(c[2] > 0.0)) return false;
+    if (c[3] >= 0.0) return true;
+    if (3.0 * (c[3] * c[3]) < (1.0 - 0x1p-20) * (8.0 * c[2] * c[4])) return true;
+    return -c[3] >= (1.0 + 0x1p-20) * (4.0 * c[4] * y) &&
+           sy.half_d2f > 0x1p-20 * (c[2] + (3.0 * -c[3]) * y + (6.0 * c[4]) * (y * y));
+}
+
 /// The one sign change of p in [a, b], given p(a) > 0 > p(b) (both beyond the noise), from x0:
 /// Halley's iteration kept in the bracket (a step that leaves it is replaced by bisection).
 /// Its error after a step s is about A·|s|³, A = |(p''/2p')² − p'''/6p'| (cubic convergence);
@@ -220,26 +232,39 @@ Answer refine(const Poly4& c, double a, double b, double x0) {
 ///    J = [y − 2|δ|, y + 2|δ|]; there p'' ≥ M = p''(y) − |p'''(y)|·2|δ| − 12|c4|·4δ² (Taylor),
 ///    so if M > 0 and |p'(y)| ≤ M·2|δ|, p' has its root m in J, and p ≥ p(y) − p'(y)²/(2M) on J,
 ///    which holds the minimum of the piece (p' < 0 left of J, > 0 right of it).
-Answer convex_piece(const Poly4& c, double x, Sample sl, double e) {
+/// The first point convex_piece samples on a convex piece from x, where p(x) = sl.f > 0 >
+/// p'(x) = sl.df: if p's Taylor parabola at x reaches 0, a little beyond that root (`start`,
+/// where the crossing is expected: exact for a quadratic in disguise); else the root of the
+/// Taylor parabola of p' (Newton's step on p' corrected for curvature), or Newton's step on p'.
+struct FirstPoint {
+    double y;
+    double start = kNaN;
+};
+[[gnu::always_inline]] inline FirstPoint first_point(const Poly4& c, double x, const Sample& sl) {
+    const double d1 = sl.df, d2 = 2.0 * sl.half_d2f, d3 = third_derivative(c, x);
+    const double disc_p = sl.df * sl.df - 4.0 * sl.half_d2f * sl.f;
+    const double disc_d = d2 * d2 - 2.0 * d1 * d3;
+    if (disc_p >= 0.0) {
+        const double u = 2.0 * sl.f / (-sl.df + std::sqrt(disc_p));
+        return {x + (1.0 + 0x1p-20) * u, x + u};
+    }
+    if (disc_d >= 0.0) return {x + newton_on_slope(d1, d2, d3, disc_d)};
+    return {x - d1 / d2};
+}
+
+/// first_point() from x and the sample there, if already taken.
+struct Probe {
+    FirstPoint point;
+    Sample at_y;
+};
+
+Answer convex_piece(const Poly4& c, double x, Sample sl, double e, const Probe* probe) {
     if (!(sl.df < 0.0)) return std::isnan(sl.df) ? unsure() : Answer{Outcome::none};
     double l = x, r = e;
     bool have_r = false;  // p'(r) > 0 is known
-    double y;
-    double start = kNaN;  // where the crossing is expected, if y is the parabola's guess
-    {
-        const double d1 = sl.df, d2 = 2.0 * sl.half_d2f, d3 = third_derivative(c, x);
-        const double disc_p = sl.df * sl.df - 4.0 * sl.half_d2f * sl.f;
-        const double disc_d = d2 * d2 - 2.0 * d1 * d3;
-        if (disc_p >= 0.0) {
-            const double u = 2.0 * sl.f / (-sl.df + std::sqrt(disc_p));
-            start = x + u;
-            y = x + (1.0 + 0x1p-20) * u;
-        } else if (disc_d >= 0.0) {
-            y = x + newton_on_slope(d1, d2, d3, disc_d);
-        } else {
-            y = x - d1 / d2;
-        }
-    }
+    const FirstPoint first = probe != nullptr ? probe->point : first_point(c, x, sl);
+    double y = first.y;
+    double start = first.start;  // where the crossing is expected, if y is the parabola's guess
     for (int i = 0; i < kMaxSteps; ++i) {
         if (!(y > l && y < r)) {
             if (have_r) {
@@ -257,7 +282,12 @@ Answer convex_piece(const Poly4& c, double x, Sample sl, double e) {
                 if (!(y > l && y < r)) y = l + 0.5 * (r - l);
             }
         }
-        const Sample sy = sample(c, y);
+        Sample sy;
+        if (i == 0 && probe != nullptr && y == first.y) {
+            sy = probe->at_y;
+        } else {
+            sy = sample(c, y);
+        }
         if (!(sy.f > 0.0)) {
             if (!clearly_negative(c, y, sy.f)) return unsure();
             return refine(c, x, y, start > x && start < y ? start : start_left_of(y, sy));
@@ -304,6 +334,28 @@ Answer first_downward_crossing(const Poly4& c, double lo, double hi) {
     bool sampled = true;
     if (!(sx.f > 0.0) || !std::isfinite(sx.f) || !std::isfinite(hi)) return unsure();
 
+    // The usual contact (a ball–ball quartic, c4 = |Δa|²/4 > 0, approaching: p'(0) < 0) is
+    // decided before the inflection points are computed, where it can be: the first convex
+    // piece's first point y, sampled; if p(y) < 0 and p'' > 0 on [0, y], [0, y] holds the first
+    // crossing as its one sign change, exactly as convex_piece() would find it below (the same
+    // point, sample and bracket: the same bits), without the work of the pieces.
+    Probe probe{};
+    bool probed = false;
+    if (lo == 0.0 && sx.df < 0.0 && c[4] > 0.0) {
+        probe.point = first_point(c, 0.0, sx);
+        const double y = probe.point.y;
+        if (y > 0.0 && y < hi) {
+            probe.at_y = sample(c, y);
+            probed = true;
+            const Sample& sy = probe.at_y;
+            if (!(sy.f > 0.0) && convex_up_to(c, y, sy)) {
+                if (!clearly_negative(c, y, sy.f)) return unsure();
+                const double start = probe.point.start;
+                return refine(c, 0.0, y, start > 0.0 && start < y ? start : start_left_of(y, sy));
+            }
+        }
+    }
+
     // The roots of p'' = 2c2 + 6c3·t + 12c4·t² inside (lo, hi), by the cancellation-free closed
     // form (Press et al. §5.6): the one of smaller magnitude as c/q, the other from the vertex
     // (a tiny c4 sends it far away, harmlessly).
@@ -344,7 +396,7 @@ Answer first_downward_crossing(const Poly4& c, double lo, double hi) {
             sx = sample(c, x);
             if (!(sx.f > 0.0)) return unsure();
         }
-        const Answer piece = convex_piece(c, x, sx, e);
+        const Answer piece = convex_piece(c, x, sx, e, probed && k == 0 ? &probe : nullptr);
         if (piece.outcome != Outcome::none) return piece;
         // p > 0 up to e; the next piece is concave and needs only the value at its far end.
         x = e;
