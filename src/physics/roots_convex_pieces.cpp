@@ -10,9 +10,12 @@
 //    by Newton's iteration on p' (started from the root of p'’s Taylor parabola at x), until an
 //    iterate y has p(y) < 0 (then [x, y] holds the crossing as its one sign change), or a
 //    rigorous lower bound on p(m) from an iterate near m is positive (no crossing).
-// The crossing is then refined by Halley's iteration in its bracket, the last step with the
-// compensated value of p (Graillat, Langlois, Louvet 2005), so a root is right to about an ulp
-// even where the plain value of p is rounding noise.
+// The crossing is then refined by Halley's iteration in its bracket, the last step (Chebyshev's,
+// of the same order) with the compensated value of p (the compensated Horner scheme of Graillat,
+// Langlois, Louvet 2005), so a root is right to about an ulp even where the plain value of p is
+// rounding noise. A contact quartic's usual hit is decided before the pieces are computed: the
+// first piece's first point is sampled, and if p < 0 there and p'' > 0 up to it, that bracket
+// is refined at once, as the pieces would have it.
 //
 // Anything else — p(lo) ≤ 0 (touching bodies: the walk's conventions apply), a value that is 0
 // or in the noise band where its sign is needed (a touch, a near-double root closer than the
@@ -24,7 +27,8 @@
 // Cost: about six evaluations of p and its derivatives and two square roots for a hit, instead
 // of the roots of the cubic p' (each by its own Newton iteration) and two Taylor start points.
 //
-// Evaluation is Estrin's form, as in roots.cpp; no FMA, no allocation: same input, same bits.
+// The plain evaluation is Estrin's form, as in roots.cpp; no FMA, no allocation: same input,
+// same bits.
 #include "physics/roots_convex_pieces.hpp"
 
 #include <cmath>
