@@ -269,8 +269,10 @@ Answer convex_piece(const Poly4& c, double x, Sample sl, double e, const Probe* 
     const FirstPoint first = probe != nullptr ? probe->point : first_point(c, x, sl);
     double y = first.y;
     double start = first.start;  // where the crossing is expected, if y is the parabola's guess
+    const Sample* known = probe != nullptr ? &probe->at_y : nullptr;  // the sample at y, if taken
     for (int i = 0; i < kMaxSteps; ++i) {
         if (!(y > l && y < r)) {
+            known = nullptr;
             if (have_r) {
                 y = l + 0.5 * (r - l);
             } else {
@@ -286,12 +288,8 @@ Answer convex_piece(const Poly4& c, double x, Sample sl, double e, const Probe* 
                 if (!(y > l && y < r)) y = l + 0.5 * (r - l);
             }
         }
-        Sample sy;
-        if (i == 0 && probe != nullptr && y == first.y) {
-            sy = probe->at_y;
-        } else {
-            sy = sample(c, y);
-        }
+        const Sample sy = known != nullptr ? *known : sample(c, y);
+        known = nullptr;
         if (!(sy.f > 0.0)) {
             if (!clearly_negative(c, y, sy.f)) return unsure();
             return refine(c, x, y, start > x && start < y ? start : start_left_of(y, sy));
