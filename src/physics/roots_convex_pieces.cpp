@@ -355,6 +355,22 @@ Answer first_downward_crossing(const Poly4& c, double lo, double hi) {
                 const double start = probe.point.start;
                 return refine(c, 0.0, y, start > 0.0 && start < y ? start : start_left_of(y, sy));
             }
+            // Past the minimum (p' > 0) with a dip that its Taylor parabola puts near or below 0
+            // (a grazing contact; a miss's stays well above), convex_piece's next point is the
+            // Newton step on p' back towards the minimum, y2 < y, still where p'' > 0 is shown:
+            // if p(y2) < 0, it would refine [0, y2] from there (its bound at y cannot have
+            // ruled out a crossing that p(y2) < 0 proves), and so is that done here.
+            if (sy.f > 0.0 && sy.df > 0.0 && sy.half_d2f > 0.0 &&
+                sy.df * sy.df >= 2.0 * sy.half_d2f * sy.f && convex_up_to(c, y, sy)) {
+                const double y2 = y + -sy.df / (2.0 * sy.half_d2f);
+                if (y2 > 0.0 && y2 < y) {
+                    const Sample s2 = sample(c, y2);
+                    if (!(s2.f > 0.0)) {
+                        if (!clearly_negative(c, y2, s2.f)) return unsure();
+                        return refine(c, 0.0, y2, start_left_of(y2, s2));
+                    }
+                }
+            }
         }
     }
 
