@@ -14,8 +14,8 @@
 // of the same order) with the compensated value of p (the compensated Horner scheme of Graillat,
 // Langlois, Louvet 2005), so a root is right to about an ulp even where the plain value of p is
 // rounding noise. A contact quartic's usual hit is decided before the pieces are computed: the
-// first piece's first point is sampled, and if p < 0 there and p'' > 0 up to it, that bracket
-// is refined at once, as the pieces would have it.
+// first piece's first point (or, at a grazing contact, its second) is sampled, and if p < 0
+// there and p'' > 0 up to it, that bracket is refined at once, as the pieces would have it.
 //
 // Anything else — p(lo) ≤ 0 (touching bodies: the walk's conventions apply), a value that is 0
 // or in the noise band where its sign is needed (a touch, a near-double root closer than the
