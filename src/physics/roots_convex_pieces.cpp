@@ -10,9 +10,12 @@
 //    by Newton's iteration on p' (started from the root of p'’s Taylor parabola at x), until an
 //    iterate y has p(y) < 0 (then [x, y] holds the crossing as its one sign change), or a
 //    rigorous lower bound on p(m) from an iterate near m is positive (no crossing).
-// The crossing is then refined by Halley's iteration in its bracket, the last step with the
-// compensated value of p (Graillat, Langlois, Louvet 2005), so a root is right to about an ulp
-// even where the plain value of p is rounding noise.
+// The crossing is then refined by Halley's iteration in its bracket, the last step (Chebyshev's,
+// of the same order) with the compensated value of p (the compensated Horner scheme of Graillat,
+// Langlois, Louvet 2005), so a root is right to about an ulp even where the plain value of p is
+// rounding noise. A contact quartic's usual hit is decided before the pieces are computed: the
+// first piece's first point (or, at a grazing contact, its second) is sampled, and if p < 0
+// there and p'' > 0 up to it, that bracket is refined at once, as the pieces would have it.
 //
 // Anything else — p(lo) ≤ 0 (touching bodies: the walk's conventions apply), a value that is 0
 // or in the noise band where its sign is needed (a touch, a near-double root closer than the
@@ -24,7 +27,8 @@
 // Cost: about six evaluations of p and its derivatives and two square roots for a hit, instead
 // of the roots of the cubic p' (each by its own Newton iteration) and two Taylor start points.
 //
-// Evaluation is Estrin's form, as in roots.cpp; no FMA, no allocation: same input, same bits.
+// The plain evaluation is Estrin's form, as in roots.cpp; no FMA, no allocation: same input,
+// same bits.
 #include "physics/roots_convex_pieces.hpp"
 
 #include <cmath>
@@ -72,44 +76,40 @@ bool clearly_negative(const Poly4& c, double t, double f) {
     return f < 0.0 && -f > 4.0 * kEps * size(c, t);
 }
 
-/// x·y = p + e exactly (Dekker 1971, without FMA; the build forbids contraction), and x + y.
-struct Exact {
-    double p, e;
+/// x = h + l exactly, each of 26 bits (Dekker 1971, without FMA: the build forbids contraction).
+struct Split {
+    double h, l;
 };
-Exact split(double x) {
-    const double c = 134217729.0 * x;  // 2^27 + 1: x = h + l, each of 26 bits
+Split split(double x) {
+    const double c = 134217729.0 * x;  // 2^27 + 1
     const double h = c - (c - x);
     return {h, x - h};
 }
-Exact two_product(double x, const Exact& y, double y_full) {
-    const double p = x * y_full;
-    const Exact xs = split(x);
-    return {p, ((xs.p * y.p - p) + xs.p * y.e + xs.e * y.p) + xs.e * y.e};
-}
-Exact two_sum(double a, double b) {
-    const double s = a + b, bb = s - a;
-    return {s, (a - (s - bb)) + (b - bb)};
-}
 
-/// p(t) as accurately as if computed in twice the precision, then rounded: Estrin's form with
-/// every product and sum replaced by its error-free transformation, the errors carried along
-/// and added at the end (the compensated schemes of S. Graillat, Ph. Langlois, N. Louvet,
-/// "Compensated Horner scheme", 2005, in Estrin's order for a shorter chain). The result's
-/// error is about ε·|p(t)| + O(ε²)·Σ|c_i||t|^i. Non-finite if a split overflows (|·| > 2^996).
+/// p(t) as accurately as if computed in twice the precision, then rounded: the compensated
+/// Horner scheme of S. Graillat, Ph. Langlois, N. Louvet ("Compensated Horner scheme", 2005,
+/// Algorithm 3.2): at each step s·t + c_i, the error of the product (Dekker's TwoProduct) and of
+/// the sum (Knuth's TwoSum) are exact doubles, and they are summed by their own Horner
+/// recurrence, added at the end. Its error is below ε·|p(t)| + γ_8²·Σ|c_i||t|^i (their
+/// Theorem 3.1). Horner's order, not Estrin's: one running value and one running error keep
+/// every intermediate in a register (the Estrin form needed twice as many, and spilled), and its
+/// chain (a product and a sum per step, the error terms beside it) is as short. Non-finite if a
+/// split overflows (|·| > 2^996).
 double accurate_value(const Poly4& c, double t) {
-    const Exact ts = split(t);
-    const Exact t2 = two_product(t, ts, t);  // t² = t2.p + t2.e
-    const Exact t2s = split(t2.p);
-    const Exact c1t = two_product(c[1], ts, t);
-    const Exact a = two_sum(c[0], c1t.p);  // c0 + c1·t
-    const Exact c3t = two_product(c[3], ts, t);
-    const Exact b1 = two_sum(c[2], c3t.p);  // c2 + c3·t
-    const Exact c4t2 = two_product(c[4], t2s, t2.p);
-    const Exact b = two_sum(b1.p, c4t2.p);  // (c2 + c3·t) + c4·t²
-    const double b_error = b.e + ((b1.e + c3t.e) + (c4t2.e + c[4] * t2.e));
-    const Exact t2b = two_product(b.p, t2s, t2.p);
-    const Exact s = two_sum(a.p, t2b.p);
-    return s.p + (s.e + ((a.e + c1t.e) + (t2b.e + (t2.p * b_error + t2.e * b.p))));
+    const Split ts = split(t);
+    double s = c[4], error = 0.0;
+    for (int i = 3; i >= 0; --i) {
+        const double product = s * t;
+        const Split ss = split(s);
+        const double product_error =
+            ((ss.h * ts.h - product) + ss.h * ts.l + ss.l * ts.h) + ss.l * ts.l;
+        const double sum = product + c[i];
+        const double z = sum - product;
+        const double sum_error = (product - (sum - z)) + (c[i] - z);
+        error = (i == 3 ? 0.0 : error * t) + (product_error + sum_error);
+        s = sum;
+    }
+    return s + error;
 }
 
 Answer unsure() {
@@ -117,14 +117,34 @@ Answer unsure() {
 }
 
 /// Where to start in a bracket [a, y] with p(y) = s.f < 0: the nearer root of the Taylor
-/// parabola at y, p + p'·u + (p''/2)·u² = 0 going left (u = y − t ≥ 0), in the cancellation-free
-/// form 2|p| / (−p' + √(p'² − 2p·p'')). It is exact for a quadratic and close for a grazing
-/// contact, whose root sits near the minimum. (NaN where it has none: then the midpoint.)
+/// parabola at y, p − p'·u + (p''/2)·u² = 0 going left (u = y − t ≥ 0), for p'' > 0 as
+/// (p' + √(p'² − 2p·p''))/p'', a product by a reciprocal computed beside the square root, so that
+/// only a sum and a product wait for it: free of cancellation where p' ≥ 0, and losing at most
+/// 12 bits where −2p·p'' ≥ 2⁻¹⁰·p'² (near the minimum, as at a grazing contact); else as
+/// 2|p| / (−p' + √…). It is exact for a quadratic and close for a grazing contact, whose root
+/// sits near the minimum. (NaN where it has none: then the midpoint.)
 double start_left_of(double y, const Sample& s) {
     const double disc = s.df * s.df - 4.0 * s.half_d2f * s.f;
     if (!(disc >= 0.0)) return kNaN;
+    if (s.half_d2f > 0.0 && (s.df >= 0.0 || -4.0 * s.half_d2f * s.f >= 0x1p-10 * (s.df * s.df))) {
+        const double inverse_d2f = 0.5 / s.half_d2f;
+        return y - (s.df + std::sqrt(disc)) * inverse_d2f;
+    }
     const double denominator = -s.df + std::sqrt(disc);
     return denominator > 0.0 ? y - 2.0 * -s.f / denominator : kNaN;
+}
+
+/// The step from x to the nearer root of the Taylor parabola of p' there, d1 + d2·v + (d3/2)·v²
+/// (d1 = p' < 0 < d2 = p'', d3 = p''', disc = d2² − 2·d1·d3 ≥ 0): −2·d1 / (d2 + √disc), free of
+/// cancellation; or, where |2·d1·d3| ≥ 2⁻²⁰·d2² (then √disc − d2 loses at most 23 of its bits,
+/// enough for a point to sample), (√disc − d2)/d3, whose reciprocal is computed beside the
+/// square root, so that only a sum and a product wait for it.
+double newton_on_slope(double d1, double d2, double d3, double disc) {
+    if (std::fabs(2.0 * d1 * d3) >= 0x1p-20 * (d2 * d2) && d2 > 0.0) {
+        const double inverse_d3 = 1.0 / d3;
+        return (std::sqrt(disc) - d2) * inverse_d3;
+    }
+    return -2.0 * d1 / (d2 + std::sqrt(disc));
 }
 
 /// Halley's step at a sample: x − p·p' / (p'² − p·p''/2).
@@ -132,14 +152,32 @@ double halley_step(const Sample& s) {
     return s.f * s.df / (s.df * s.df - s.f * s.half_d2f);
 }
 
-/// Halley's last step from x, with the compensated value of p (where it is finite), kept in
-/// [a, b].
-double last_step(const Poly4& c, double x, Sample s, double a, double b) {
-    const double f = accurate_value(c, x);
-    if (std::isfinite(f)) s.f = f;
-    const double step = halley_step(s);
+/// The last step from x, with the compensated value f of p there (where it is finite): Chebyshev's
+/// step n + n²·(p''/2)/p', n = f/p', the same order (cubic) as Halley's and, for the tiny last
+/// step, the same to far below an ulp of x; its reciprocal 1/p' does not wait for f, so the step
+/// is two products and a sum after f (Halley's division waits for it). Kept in [a, b]. s: p, p'
+/// and p''/2 at x in plain arithmetic (p only where the compensated value overflows).
+double last_step(const Poly4& c, double x, const Sample& s, double a, double b) {
+    const double inverse_slope = 1.0 / s.df;
+    const double bend = s.half_d2f * inverse_slope;
+    const double accurate = accurate_value(c, x);
+    const double f = std::isfinite(accurate) ? accurate : s.f;
+    const double n = f * inverse_slope;
+    const double step = n + n * (n * bend);
     const double t = std::isfinite(step) ? x - step : x;
     return t < a ? a : (t > b ? b : t);
+}
+
+/// p'' > 0 on [0, y] (y > 0, c4 > 0; sy: the sample at y), shown by one of: p''/2 = c2 + 3c3·t +
+/// 6c4·t² rising from c2 > 0 (c3 ≥ 0); its discriminant negative; or its vertex −c3/(4c4) at or
+/// beyond y, so that it falls on [0, y] to p''(y)/2 > 0. The margins (2⁻²⁰ relative) are far
+/// above the rounding of these few operations.
+bool convex_up_to(const Poly4& c, double y, const Sample& sy) {
+    if (!(c[2] > 0.0)) return false;
+    if (c[3] >= 0.0) return true;
+    if (3.0 * (c[3] * c[3]) < (1.0 - 0x1p-20) * (8.0 * c[2] * c[4])) return true;
+    return -c[3] >= (1.0 + 0x1p-20) * (4.0 * c[4] * y) &&
+           sy.half_d2f > 0x1p-20 * (c[2] + (3.0 * -c[3]) * y + (6.0 * c[4]) * (y * y));
 }
 
 /// The one sign change of p in [a, b], given p(a) > 0 > p(b) (both beyond the noise), from x0:
@@ -163,7 +201,7 @@ Answer refine(const Poly4& c, double a, double b, double x0) {
         const double step = halley_step(s);
         const double next = x - step;
         const double gain =
-            2.0 * (s.half_d2f * s.half_d2f + std::fabs(third_derivative(c, x) * s.df) / 6.0) /
+            (2.0 * (s.half_d2f * s.half_d2f) + std::fabs(third_derivative(c, x) * s.df) / 3.0) /
             (s.df * s.df);                                            // 2A
         const double error = gain * (step * step) * std::fabs(step);  // of next
         const double tolerance = 0.1 * kEps * std::fabs(x);
@@ -171,11 +209,19 @@ Answer refine(const Poly4& c, double a, double b, double x0) {
             return {Outcome::root, last_step(c, x, s, a0, b0)};
         }
         const bool in = next > a && next < b;
+        if (in && gain * (error * error) * error <= tolerance) {
+            // The step from next is the last: it needs p' and p''/2 there, which the Taylor
+            // expansion at x gives from what is known (d = next − x is tiny), without the
+            // latency and the instructions of another sample.
+            const double d = next - x, d3f = third_derivative(c, x);
+            const double half_d3f = 0.5 * d3f;
+            const Sample at_next{s.f + d * (s.df + d * s.half_d2f),
+                                 s.df + d * (2.0 * s.half_d2f + d * (half_d3f + d * (4.0 * c[4]))),
+                                 s.half_d2f + d * (half_d3f + d * (6.0 * c[4]))};
+            return {Outcome::root, last_step(c, next, at_next, a0, b0)};
+        }
         x = in ? next : a + 0.5 * (b - a);
         s = sample(c, x);
-        if (in && gain * (error * error) * error <= tolerance) {
-            return {Outcome::root, last_step(c, x, s, a0, b0)};
-        }
     }
     return unsure();
 }
@@ -190,28 +236,43 @@ Answer refine(const Poly4& c, double a, double b, double x0) {
 ///    J = [y − 2|δ|, y + 2|δ|]; there p'' ≥ M = p''(y) − |p'''(y)|·2|δ| − 12|c4|·4δ² (Taylor),
 ///    so if M > 0 and |p'(y)| ≤ M·2|δ|, p' has its root m in J, and p ≥ p(y) − p'(y)²/(2M) on J,
 ///    which holds the minimum of the piece (p' < 0 left of J, > 0 right of it).
-Answer convex_piece(const Poly4& c, double x, Sample sl, double e) {
+/// The first point convex_piece samples on a convex piece from x, where p(x) = sl.f > 0 >
+/// p'(x) = sl.df: if p's Taylor parabola at x reaches 0, a little beyond that root (`start`,
+/// where the crossing is expected: exact for a quadratic in disguise); else the root of the
+/// Taylor parabola of p' (Newton's step on p' corrected for curvature), or Newton's step on p'.
+struct FirstPoint {
+    double y;
+    double start = kNaN;
+};
+[[gnu::always_inline]] inline FirstPoint first_point(const Poly4& c, double x, const Sample& sl) {
+    const double d1 = sl.df, d2 = 2.0 * sl.half_d2f, d3 = third_derivative(c, x);
+    const double disc_p = sl.df * sl.df - 4.0 * sl.half_d2f * sl.f;
+    const double disc_d = d2 * d2 - 2.0 * d1 * d3;
+    if (disc_p >= 0.0) {
+        const double u = 2.0 * sl.f / (-sl.df + std::sqrt(disc_p));
+        return {x + (1.0 + 0x1p-20) * u, x + u};
+    }
+    if (disc_d >= 0.0) return {x + newton_on_slope(d1, d2, d3, disc_d)};
+    return {x - d1 / d2};
+}
+
+/// first_point() from x and the sample there, if already taken.
+struct Probe {
+    FirstPoint point;
+    Sample at_y;
+};
+
+Answer convex_piece(const Poly4& c, double x, Sample sl, double e, const Probe* probe) {
     if (!(sl.df < 0.0)) return std::isnan(sl.df) ? unsure() : Answer{Outcome::none};
     double l = x, r = e;
     bool have_r = false;  // p'(r) > 0 is known
-    double y;
-    double start = kNaN;  // where the crossing is expected, if y is the parabola's guess
-    {
-        const double d1 = sl.df, d2 = 2.0 * sl.half_d2f, d3 = third_derivative(c, x);
-        const double disc_p = sl.df * sl.df - 4.0 * sl.half_d2f * sl.f;
-        const double disc_d = d2 * d2 - 2.0 * d1 * d3;
-        if (disc_p >= 0.0) {
-            const double u = 2.0 * sl.f / (-sl.df + std::sqrt(disc_p));
-            start = x + u;
-            y = x + (1.0 + 0x1p-20) * u;
-        } else if (disc_d >= 0.0) {
-            y = x + -2.0 * d1 / (d2 + std::sqrt(disc_d));
-        } else {
-            y = x - d1 / d2;
-        }
-    }
+    const FirstPoint first = probe != nullptr ? probe->point : first_point(c, x, sl);
+    double y = first.y;
+    double start = first.start;  // where the crossing is expected, if y is the parabola's guess
+    const Sample* known = probe != nullptr ? &probe->at_y : nullptr;  // the sample at y, if taken
     for (int i = 0; i < kMaxSteps; ++i) {
         if (!(y > l && y < r)) {
+            known = nullptr;
             if (have_r) {
                 y = l + 0.5 * (r - l);
             } else {
@@ -227,7 +288,8 @@ Answer convex_piece(const Poly4& c, double x, Sample sl, double e) {
                 if (!(y > l && y < r)) y = l + 0.5 * (r - l);
             }
         }
-        const Sample sy = sample(c, y);
+        const Sample sy = known != nullptr ? *known : sample(c, y);
+        known = nullptr;
         if (!(sy.f > 0.0)) {
             if (!clearly_negative(c, y, sy.f)) return unsure();
             return refine(c, x, y, start > x && start < y ? start : start_left_of(y, sy));
@@ -261,18 +323,56 @@ Answer convex_piece(const Poly4& c, double x, Sample sl, double e) {
 Answer first_downward_crossing(const Poly4& c, double lo, double hi) {
     double x = lo;
     // p at x. At lo = 0 (the physics' case) the Taylor coefficients are the c_i themselves:
-    // the same values as sample() gives there, for finite ones, without its latency.
+    // the same values as sample() gives there, for finite ones, without its latency. Only c1
+    // is checked here: a non-finite c0 fails the test of p(lo) below, and a non-finite c2, c3
+    // or c4 (c4 ≠ 0) makes the discriminant of p'' non-finite, which is answered `unsure`.
     Sample sx;
     if (lo == 0.0) {
-        for (const double ci : c) {
-            if (!std::isfinite(ci)) return unsure();
-        }
+        if (!std::isfinite(c[1])) return unsure();
         sx = {c[0], c[1], c[2]};
     } else {
         sx = sample(c, lo);
     }
     bool sampled = true;
     if (!(sx.f > 0.0) || !std::isfinite(sx.f) || !std::isfinite(hi)) return unsure();
+
+    // The usual contact (a ball–ball quartic, c4 = |Δa|²/4 > 0, approaching: p'(0) < 0) is
+    // decided before the inflection points are computed, where it can be: the first convex
+    // piece's first point y, sampled; if p(y) < 0 and p'' > 0 on [0, y], [0, y] holds the first
+    // crossing as its one sign change, exactly as convex_piece() would find it below (the same
+    // point, sample and bracket: the same bits), without the work of the pieces.
+    Probe probe{};
+    bool probed = false;
+    if (lo == 0.0 && sx.df < 0.0 && c[4] > 0.0) {
+        probe.point = first_point(c, 0.0, sx);
+        const double y = probe.point.y;
+        if (y > 0.0 && y < hi) {
+            probe.at_y = sample(c, y);
+            probed = true;
+            const Sample& sy = probe.at_y;
+            if (!(sy.f > 0.0) && convex_up_to(c, y, sy)) {
+                if (!clearly_negative(c, y, sy.f)) return unsure();
+                const double start = probe.point.start;
+                return refine(c, 0.0, y, start > 0.0 && start < y ? start : start_left_of(y, sy));
+            }
+            // Past the minimum (p' > 0) with a dip that its Taylor parabola puts near or below 0
+            // (a grazing contact; a miss's stays well above), convex_piece's next point is the
+            // Newton step on p' back towards the minimum, y2 < y, still where p'' > 0 is shown:
+            // if p(y2) < 0, it would refine [0, y2] from there (its bound at y cannot have
+            // ruled out a crossing that p(y2) < 0 proves), and so is that done here.
+            if (sy.f > 0.0 && sy.df > 0.0 && sy.half_d2f > 0.0 &&
+                sy.df * sy.df >= 2.0 * sy.half_d2f * sy.f && convex_up_to(c, y, sy)) {
+                const double y2 = y + -sy.df / (2.0 * sy.half_d2f);
+                if (y2 > 0.0 && y2 < y) {
+                    const Sample s2 = sample(c, y2);
+                    if (!(s2.f > 0.0)) {
+                        if (!clearly_negative(c, y2, s2.f)) return unsure();
+                        return refine(c, 0.0, y2, start_left_of(y2, s2));
+                    }
+                }
+            }
+        }
+    }
 
     // The roots of p'' = 2c2 + 6c3·t + 12c4·t² inside (lo, hi), by the cancellation-free closed
     // form (Press et al. §5.6): the one of smaller magnitude as c/q, the other from the vertex
@@ -314,7 +414,7 @@ Answer first_downward_crossing(const Poly4& c, double lo, double hi) {
             sx = sample(c, x);
             if (!(sx.f > 0.0)) return unsure();
         }
-        const Answer piece = convex_piece(c, x, sx, e);
+        const Answer piece = convex_piece(c, x, sx, e, probed && k == 0 ? &probe : nullptr);
         if (piece.outcome != Outcome::none) return piece;
         // p > 0 up to e; the next piece is concave and needs only the value at its far end.
         x = e;
