@@ -24,7 +24,7 @@ Effort effort_for_level(int level) {
          .placements = 4, .break_samples = 8, .polish = 3, .deep_finalists = 6, .deep_samples = 12,
          .next_pairs = 3, .next_speeds = 3, .next_spins = 3},
         {.noise_multiplier = 1.0, .pot_pairs = 14, .speeds = 7, .spins = 9, .safety_speeds = 4,
-         .safety_contacts = 7, .sweep_headings = 180, .shortlist = 48, .samples = 40, .finalists = 8,
+         .safety_contacts = 7, .sweep_headings = 720, .shortlist = 48, .samples = 40, .finalists = 8,
          .placements = 6, .break_samples = 12, .polish = 4, .deep_finalists = 8, .deep_samples = 16,
          .next_pairs = 3, .next_speeds = 4, .next_spins = 4},
     }};
