@@ -1,6 +1,10 @@
 // The AI's strength benchmark (docs/ai.md): not a test, a measurement.
 //   ai_strength shots   [--n N] [--level L] [--noise X] [--seed S]   cue ball + one object ball
 //   ai_strength runouts [--n N] [--level L] [--noise X] [--seed S] [--game 8ball|9ball]
+//                       [--paired 1] [--from F]
+//     --paired 1: each rack its own noise and decision streams, and "rack I 0|1" on stderr, so
+//     that two arms of a tuning run play the same racks (until their decisions differ) and
+//     can be compared rack by rack; --from F starts at rack F (to split a run over cores).
 // Prints one JSON object: counts, rates with 95 % Wilson intervals, time per decision (median,
 // p95) and simulations per decision. Ladder games go through `coolaaber-cli match --duplicate`.
 #include <algorithm>
@@ -30,6 +34,8 @@ struct Args {
     double noise = 1.0;
     std::uint64_t seed = 1;
     std::string game = "8ball";
+    bool paired = false;  // runouts: each rack its own noise and decision streams
+    int from = 0;         // runouts: the first rack's index
 };
 
 struct Interval {
@@ -183,7 +189,11 @@ void runouts(const Args& a) {
     int cleared = 0, racks = 0;
     Timing timing, break_timing;
     std::uint64_t decision = 0;
-    for (int i = 0; racks < a.n; ++i) {
+    for (int i = a.from; racks < a.n; ++i) {
+        if (a.paired) {  // this rack's own streams: arms of a tuning run play the same racks
+            noise_rng = physics::SplitMix64(a.seed * 7919ULL + static_cast<std::uint64_t>(i));
+            decision = static_cast<std::uint64_t>(i) * 1000ULL;
+        }
         ai::Position pos = base_position(game);
         const std::vector<physics::BallState> balls = physics::rack(
             game == rules::Game::eight_ball ? physics::RackType::eight_ball
@@ -204,16 +214,19 @@ void runouts(const Args& a) {
         s.call = rules::Call::nothing();
         s.fouls_in_row = {0, 0};
         s.warned = {false, false};
+        bool won = false;
         for (int shot = 0; shot < 30; ++shot) {
             pos.state = s;
             const Played p = play(pos, settings, ++decision * 31 + a.seed, noise_rng, timing);
             if (p.verdict.game_over) {
-                if (p.verdict.winner == rules::Player::A) ++cleared;
+                if (p.verdict.winner == rules::Player::A) won = true;
                 break;
             }
             if (p.verdict.choice || p.verdict.next_shooter != rules::Player::A) break;
             s = p.verdict.state;
         }
+        cleared += won ? 1 : 0;
+        if (a.paired) std::fprintf(stderr, "rack %d %d\n", i, won ? 1 : 0);
     }
     const Interval w = wilson(cleared, racks);
     std::printf("{\"mode\": \"runouts\", \"game\": \"%s\", \"level\": %d, \"noise\": %g, "
@@ -235,6 +248,8 @@ int main(int argc, char** argv) {
         else if (k == "--noise") a.noise = std::atof(v.c_str());
         else if (k == "--seed") a.seed = std::strtoull(v.c_str(), nullptr, 10);
         else if (k == "--game") a.game = v;
+        else if (k == "--paired") a.paired = v == "1";
+        else if (k == "--from") a.from = std::atoi(v.c_str());
         else {
             std::fprintf(stderr, "unknown option %s\n", k.c_str());
             return 2;
@@ -244,7 +259,7 @@ int main(int argc, char** argv) {
     else if (a.mode == "runouts") runouts(a);
     else {
         std::fprintf(stderr, "usage: ai_strength shots|runouts [--n N] [--level L] [--noise X] "
-                             "[--seed S] [--game 8ball|9ball]\n");
+                             "[--seed S] [--game 8ball|9ball] [--paired 1] [--from F]\n");
         return 2;
     }
     return 0;
