@@ -44,10 +44,13 @@
 // the same bits everywhere. The choice is made once per process from the CPU's features. Only
 // GCC on x86-64 gets the second build (the per-function target is GCC's); elsewhere the first
 // is the only one. -ffp-contract=off holds in both: no other product is fused.
+// (-DCOOLAABER_FUSED_PRODUCT=0 leaves it out, to compare the other build's results.)
+#ifndef COOLAABER_FUSED_PRODUCT
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
 #define COOLAABER_FUSED_PRODUCT 1
 #else
 #define COOLAABER_FUSED_PRODUCT 0
+#endif
 #endif
 
 namespace physics::roots::convex_pieces {
