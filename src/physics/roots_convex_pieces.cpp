@@ -186,13 +186,11 @@ double compensated_value(const Poly4& c, double t) {
 
 bool fused_product_available() {
 #if COOLAABER_FUSED_PRODUCT
-    // Asked once: a function-local static const (initialised thread-safely on the first call),
-    // the engine's only cached state: the CPU's features, which do not change while it runs.
-    static const bool available = [] {
-        __builtin_cpu_init();
-        return __builtin_cpu_supports("avx") && __builtin_cpu_supports("fma");
-    }();
-    return available;
+    // No state of the engine's: the CPU's features as libgcc's constructor recorded them (at
+    // load time, before any constructor of default priority, so before any call here), a load
+    // and a test per query. (AVX too: GCC's FMA target implies AVX's VEX encoding, and the test
+    // for AVX is the one that asks whether the OS saves the YMM registers.)
+    return __builtin_cpu_supports("avx") && __builtin_cpu_supports("fma");
 #else
     return false;
 #endif
