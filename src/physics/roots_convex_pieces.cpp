@@ -135,9 +135,9 @@ namespace {
 
 /// split_value's result with each product's error as fma(s, t, −s·t). Where s and t are
 /// moderate (2⁻⁴⁰⁰ ≤ |·| ≤ 2⁴⁰⁰: nothing overflows in the splits, and the partial products of
-/// Dekker's TwoProduct, down to l_s·l_t ≥ 2⁻⁹⁰⁴, are exact), Dekker's error is exact (Dekker
-/// 1971; S. Boldo, "Pitfalls of a full floating-point proof", 2006, Theorem 3), so it is the
-/// same double as the FMA's, which is exact whenever the error is representable; where it is 0,
+/// Dekker's TwoProduct are exact, l_s·l_t ≥ 2⁻⁹⁰⁴ where nonzero), Dekker's error is exact (Dekker
+/// 1971; formally proved by S. Boldo, "Pitfalls of a full floating-point proof", 2006), so it is
+/// the same double as the FMA's, which is exact whenever the error is representable; where it is 0,
 /// both give +0 (Dekker's first difference h_s·h_t − s·t is +0 or nonzero, and a sum in
 /// round-to-nearest is −0 only of two −0s; the FMA's exact 0 is +0 likewise). Elsewhere (a 0,
 /// a huge or tiny or non-finite value: never in the physics) Dekker's own result is returned,
@@ -188,8 +188,8 @@ bool fused_product_available() {
 #if COOLAABER_FUSED_PRODUCT
     // No state of the engine's: the CPU's features as libgcc's constructor recorded them (at
     // load time, before any constructor of default priority, so before any call here), a load
-    // and a test per query. (AVX too: GCC's FMA target implies AVX's VEX encoding, and the test
-    // for AVX is the one that asks whether the OS saves the YMM registers.)
+    // and a test per query. (AVX too: GCC's FMA target implies the VEX encoding, which needs the
+    // OS to save the YMM state; libgcc reports AVX only where XGETBV says it does.)
     return __builtin_cpu_supports("avx") && __builtin_cpu_supports("fma");
 #else
     return false;

@@ -43,7 +43,7 @@ bool clearly_negative(const Poly4& c, double t, double f) {
 }
 
 /// Cold: the paths that end here (rare in the physics) are laid out off the hot ones' way (about
-/// 3 % less time for a hit or a grazing root; the arithmetic is the same).
+/// 3-4 % less time for a hit or a grazing root; the arithmetic is the same).
 [[gnu::cold]] Answer unsure() {
     return {};
 }
@@ -90,8 +90,8 @@ double halley_step(const Sample& s) {
 /// is two products and a sum after f (Halley's division waits for it). Kept in [a, b]. s: p, p'
 /// and p''/2 at x in plain arithmetic (p only where the compensated value overflows). Inlined
 /// (at its two calls): a call passes s through memory and spills the live registers around it;
-/// inlined (with start_left_of), the FMA build's hit and grazing root take 8-11 % less time, the
-/// other build's 2-4 % (the same arithmetic, the same bits).
+/// inlined (with start_left_of), the FMA build's hit and grazing root take 7-10 % less time, the
+/// other build's about 2 % (the same arithmetic, the same bits).
 [[gnu::always_inline]] inline double last_step(const Poly4& c, double x, const Sample& s, double a,
                                                double b) {
     const double inverse_slope = 1.0 / s.df;
