@@ -93,7 +93,7 @@ public:
             BallState s = balls[i];
             if (s.motion != Motion::pocketed) s = motion::settle(params_, s);
             segments_[i].push_back({0.0, s});
-            live_[i] = make_live(s, 0.0);
+            set_live(i, s, 0.0);
         }
         // Pair (i, j > i) is predicted by predict_for(j), once own_[j] is known.
         for (std::size_t i = 0; i < n_; ++i) predict_for(i, ~0u << i << 1);
@@ -160,12 +160,20 @@ private:
     detect::Mover mover(std::size_t i, double until) const {
         return detect::make_mover(kinematics(i), until - now_, rolling(i));
     }
-    bool active(std::size_t i) const { return live_[i].motion != Motion::pocketed; }
+    bool active(std::size_t i) const { return ((active_ >> i) & 1u) != 0; }
     bool rolling(std::size_t i) const { return live_[i].motion == Motion::rolling; }
 
     void start_segment(std::size_t i, const BallState& s) {
         segments_[i].push_back({now_, s});
-        live_[i] = make_live(s, now_);
+        set_live(i, s, now_);
+    }
+    /// Sets ball i's Live entry for a segment starting at t0 in state s, and its active_ bit.
+    void set_live(std::size_t i, const BallState& s, double t0) {
+        live_[i] = make_live(s, t0);
+        if (s.motion == Motion::pocketed)
+            active_ &= ~(1u << i);
+        else
+            active_ |= 1u << i;
     }
     Live make_live(const BallState& s, double t0) const {
         const Vec2 a = motion::acceleration(params_, s);
@@ -322,8 +330,11 @@ private:
         const double reach_i_own =
             detect::reach_bound(speed_i, live_[i].accel, own_[i].time - now_, rolling_i);
         disc_[i] = {ki.p, reach_i_own};
-        for (std::size_t j = 0; j < n_; ++j) {
-            if (j == i || !active(j) || ((later >> j) & 1u) != 0) continue;
+        // (the other active balls not in `later`, in increasing j: a bit walk, not a test of
+        // every index)
+        for (std::uint32_t others = active_ & ~later & ~(1u << i); others != 0;
+             others &= others - 1) {
+            const auto j = static_cast<std::size_t>(std::countr_zero(others));
             // Both discs (up to each ball's own next event, which bounds the pair's horizon)
             // more than 2R + 1e-5 m apart: the balls stay that far apart, so the contact
             // quartic is ≥ 4R·1e-5 on the whole horizon, far above its rounding (its terms are
@@ -343,15 +354,16 @@ private:
                 until == own_[i].time
                     ? reach_i_own
                     : detect::reach_bound(speed_i, live_[i].accel, h, rolling_i);
+            // (reach_bound is at least 1e-12, never 0: no test for two balls that cannot move)
             const double reach_j = detect::reach_bound(speed_j, live_[j].accel, h, rolling_j);
-            if (reach_i == 0 && reach_j == 0) continue;
             const motion::Kinematics kj = kinematics(j);
             const double limit = 2 * R + reach_i + reach_j;
             if (norm2(kj.p - ki.p) > limit * limit) continue;
             // (screened: |Δp|² ≤ limit² here, and circle_contact's limit is the same sum up to
-            // an ulp, its test 1e-9 looser)
-            const detect::Prediction p = detect::ball_ball(
-                {ki, h, reach_i, rolling_i}, {kj, h, reach_j, rolling_j}, R, h, true);
+            // an ulp, its test 1e-9 looser). What detect::ball_ball computes, with the same
+            // arguments, less its test for two reaches of 0, which reach_bound never returns.
+            const detect::Prediction p = detect::detail::circle_contact(
+                kj.p - ki.p, kj.v - ki.v, kj.a - ki.a, 2.0 * R, reach_i + reach_j, h, true);
             if (std::isinf(p.tau)) continue;
             pair_time_[i][j] = pair_time_[j][i] = now_ + p.tau;
             pair_pushing_[i][j] = pair_pushing_[j][i] = p.pushing;
@@ -533,6 +545,9 @@ private:
     std::uint64_t lines_always_ = 0, noses_always_ = 0;  ///< faces and noses of no pocket
     bool grouped_ = false;  ///< false: more than 64 faces or noses, none skipped
     std::array<Live, kMaxBalls> live_{};
+    /// A bit per ball that is not pocketed (live_[i].motion != Motion::pocketed), kept by
+    /// set_live: the pair loop walks these bits.
+    std::uint32_t active_ = 0;
     std::array<Candidate, kMaxBalls> own_{};
     std::array<Disc, kMaxBalls> disc_{};  ///< per ball, set by predict_candidates
     /// Per ball k, the first of own_[k] and every pair of k (kept by predict_for).
