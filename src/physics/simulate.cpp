@@ -7,6 +7,7 @@
 #include <array>
 #include <bit>
 #include <cassert>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 
@@ -167,13 +168,15 @@ private:
         segments_[i].push_back({now_, s});
         set_live(i, s, now_);
     }
-    /// Sets ball i's Live entry for a segment starting at t0 in state s, and its active_ bit.
+    /// Sets ball i's Live entry for a segment starting at t0 in state s, and its bits in
+    /// active_ and still_.
     void set_live(std::size_t i, const BallState& s, double t0) {
-        live_[i] = make_live(s, t0);
-        if (s.motion == Motion::pocketed)
-            active_ &= ~(1u << i);
-        else
-            active_ |= 1u << i;
+        const Live& l = live_[i] = make_live(s, t0);
+        const std::uint32_t bit = 1u << i;
+        active_ = s.motion == Motion::pocketed ? active_ & ~bit : active_ | bit;
+        const bool still = l.vel.x == 0.0 && l.vel.y == 0.0 && l.acc.x == 0.0 &&
+                           l.acc.y == 0.0 && std::isfinite(l.pos.x) && std::isfinite(l.pos.y);
+        still_ = still ? still_ | bit : still_ & ~bit;
     }
     Live make_live(const BallState& s, double t0) const {
         const Vec2 a = motion::acceleration(params_, s);
@@ -331,9 +334,10 @@ private:
             detect::reach_bound(speed_i, live_[i].accel, own_[i].time - now_, rolling_i);
         disc_[i] = {ki.p, reach_i_own};
         // (the other active balls not in `later`, in increasing j: a bit walk, not a test of
-        // every index)
-        for (std::uint32_t others = active_ & ~later & ~(1u << i); others != 0;
-             others &= others - 1) {
+        // every index; two still balls are skipped, see still_)
+        std::uint32_t others = active_ & ~later & ~(1u << i);
+        if (((still_ >> i) & 1u) != 0) others &= ~still_;
+        for (; others != 0; others &= others - 1) {
             const auto j = static_cast<std::size_t>(std::countr_zero(others));
             // Both discs (up to each ball's own next event, which bounds the pair's horizon)
             // more than 2R + 1e-5 m apart: the balls stay that far apart, so the contact
@@ -548,6 +552,13 @@ private:
     /// A bit per ball that is not pocketed (live_[i].motion != Motion::pocketed), kept by
     /// set_live: the pair loop walks these bits.
     std::uint32_t active_ = 0;
+    /// A bit per ball whose segment has velocity and acceleration exactly 0 (at rest, or
+    /// spinning in place) at a finite position, kept by set_live. Two such balls have no
+    /// contact: their Δv and Δa are ±0, so circle_contact either returns none before the
+    /// solver (out of reach; or touching, with a rate and a curvature of ±0, neither
+    /// approaching nor pushing) or builds the quartic {|Δp|² − D², ±0, ±0, ±0, ±0}, a constant
+    /// (degree 0), for which first_downward_crossing returns none; so their pair is not tried.
+    std::uint32_t still_ = 0;
     std::array<Candidate, kMaxBalls> own_{};
     std::array<Disc, kMaxBalls> disc_{};  ///< per ball, set by predict_candidates
     /// Per ball k, the first of own_[k] and every pair of k (kept by predict_for).
