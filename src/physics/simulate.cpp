@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <span>
 
 #include "physics/collide.hpp"
 #include "physics/cue_strike.hpp"
@@ -293,21 +294,27 @@ private:
             m = m.within(tau);
         };
         // The faces and noses of a pocket out of the ball's reach are skipped (see
-        // group_faces); the rest are tried in the same order as ever.
+        // group_faces); the rest are tried in the same order as ever. (The tables' vectors as
+        // spans held here: through the references the compiler reloads each vector's bounds
+        // at every use, since the stores in between might alias them.)
+        const std::span<const CushionLine> faces = table_.lines;
+        const std::span<const JawNose> jaw_noses = table_.noses;
+        const std::span<const Pocket> pockets = table_.pockets;
+        const std::span<const double> drop_lateral = drop_lateral_;
         auto try_line = [&](std::size_t g) {
-            const detect::Prediction p = detect::line(m, table_.lines[g], R);
+            const detect::Prediction p = detect::line(m, faces[g], R);
             consider(p.tau, Kind::line, static_cast<int>(g), p.pushing);
         };
         auto try_nose = [&](std::size_t g) {
-            const detect::Prediction p = detect::nose(m, table_.noses[g], R);
+            const detect::Prediction p = detect::nose(m, jaw_noses[g], R);
             consider(p.tau, Kind::nose, static_cast<int>(g), p.pushing);
         };
         if (!grouped_) {
-            for (std::size_t g = 0; g < table_.lines.size(); ++g) try_line(g);
-            for (std::size_t g = 0; g < table_.noses.size(); ++g) try_nose(g);
+            for (std::size_t g = 0; g < faces.size(); ++g) try_line(g);
+            for (std::size_t g = 0; g < jaw_noses.size(); ++g) try_nose(g);
         }
         std::uint64_t lines = lines_always_, noses = noses_always_;
-        for (const FaceGroup& fg : groups_) {
+        for (const FaceGroup& fg : std::span<const FaceGroup>(groups_)) {
             const double limit = fg.radius + R + m.reach * (1.0 + 1e-9) + 1e-5;
             if (norm2(m.k.p - fg.centre) > limit * limit) continue;  // (false if reach is ∞)
             lines |= fg.lines;
@@ -317,8 +324,8 @@ private:
             try_line(static_cast<std::size_t>(std::countr_zero(lines)));
         for (; noses != 0; noses &= noses - 1)
             try_nose(static_cast<std::size_t>(std::countr_zero(noses)));
-        for (std::size_t g = 0; g < table_.pockets.size(); ++g) {
-            consider(detect::drop(m, table_.pockets[g], drop_lateral_[g]), Kind::drop,
+        for (std::size_t g = 0; g < pockets.size(); ++g) {
+            consider(detect::drop(m, pockets[g], drop_lateral[g]), Kind::drop,
                      static_cast<int>(g), false);
         }
         own_[i] = own;
