@@ -340,6 +340,10 @@ private:
         const double reach_i_own =
             detect::reach_bound(speed_i, live_[i].accel, own_[i].time - now_, rolling_i);
         disc_[i] = {ki.p, reach_i_own};
+        // Ball i's values used by every pair, held here: each store below, and each call of
+        // the solver, would make the compiler load them again from the members.
+        const double now = now_, own_i = own_[i].time, accel_i = live_[i].accel;
+        std::uint32_t paired_i = 0;
         // (the other active balls not in `later`, in increasing j: a bit walk, not a test of
         // every index; two still balls are skipped, see still_)
         std::uint32_t others = active_ & ~later & ~(1u << i);
@@ -352,19 +356,18 @@ private:
             // below (|Δp| + 3·(reach_i + reach_j))², a few m², kept so by the 50 m cap), and
             // the tests below or the solver would give none. One test instead of the reach
             // bounds and positions.
-            const double apart = disc_[i].reach + disc_[j].reach;
+            const double apart = reach_i_own + disc_[j].reach;  // (disc_[i].reach)
             const double clear = 2 * R + apart + 1e-5;
             if (apart < 50.0 && norm2(disc_[j].centre - ki.p) > clear * clear) continue;
-            const double until = std::min(own_[i].time, own_[j].time);
-            if (!(until >= now_)) continue;
-            const double h = until - now_;
+            const double until = std::min(own_i, own_[j].time);
+            if (!(until >= now)) continue;
+            const double h = until - now;
             const bool rolling_j = rolling(j);
             // |v_j(now)| ≤ |v_j(t0)| + |a_j|·(now − t0): no square root per pair.
-            const double speed_j = live_[j].speed + live_[j].accel * (now_ - live_[j].t0);
-            const double reach_i =
-                until == own_[i].time
-                    ? reach_i_own
-                    : detect::reach_bound(speed_i, live_[i].accel, h, rolling_i);
+            const double speed_j = live_[j].speed + live_[j].accel * (now - live_[j].t0);
+            const double reach_i = until == own_i
+                                       ? reach_i_own
+                                       : detect::reach_bound(speed_i, accel_i, h, rolling_i);
             // (reach_bound is at least 1e-12, never 0: no test for two balls that cannot move)
             const double reach_j = detect::reach_bound(speed_j, live_[j].accel, h, rolling_j);
             const motion::Kinematics kj = kinematics(j);
@@ -376,11 +379,12 @@ private:
             const detect::Prediction p = detect::detail::circle_contact(
                 kj.p - ki.p, kj.v - ki.v, kj.a - ki.a, 2.0 * R, reach_i + reach_j, h, true);
             if (std::isinf(p.tau)) continue;
-            pair_time_[i][j] = pair_time_[j][i] = now_ + p.tau;
+            pair_time_[i][j] = pair_time_[j][i] = now + p.tau;
             pair_pushing_[i][j] = pair_pushing_[j][i] = p.pushing;
-            paired_[i] |= 1u << j;
+            paired_i |= 1u << j;
             paired_[j] |= 1u << i;
         }
+        paired_[i] = paired_i;
     }
 
     /// Groups each pocket's jaw faces and noses in a circle about the pocket's centre that holds
