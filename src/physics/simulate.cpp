@@ -202,11 +202,12 @@ private:
 
     /// The first of all candidates (own and pair) in the total order, or Candidate{} if none
     /// is before it: the first of the per-ball firsts, which predict_for keeps up to date.
+    /// (A pointer to the best so far, not a copy of it at each improvement.)
     Candidate earliest() const {
-        Candidate best;
+        const Candidate* best = &none_;
         for (std::size_t i = 0; i < n_; ++i)
-            if (first_[i].before(best)) best = first_[i];
-        return best;
+            if (first_[i].before(*best)) best = &first_[i];
+        return *best;
     }
 
     /// The first of ball k's own candidate and all its pairs. Pairs of k of equal time are
@@ -574,6 +575,7 @@ private:
     std::array<Disc, kMaxBalls> disc_{};  ///< per ball, set by predict_candidates
     /// Per ball k, the first of own_[k] and every pair of k (kept by predict_for).
     std::array<Candidate, kMaxBalls> first_{};
+    const Candidate none_{};  ///< no candidate (time ∞): where earliest starts
     /// Per ball k, the other ball of first_[k] where that is a pair of k, else k.
     std::array<std::size_t, kMaxBalls> first_with_{};
     /// Per ball i, a bit for each other ball k whose first is its pair with i (first_with_[k]
