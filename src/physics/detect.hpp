@@ -100,6 +100,19 @@ inline bool quadratic_stays_positive(double a0, double a1, double a2, double h) 
     return std::isfinite(size) && min_on(a0, a1, a2, h) > 1e-12 * size + 1e-300;
 }
 
+/// True if q(τ) = a0 + a1·τ + a2·τ² starts at or below 0 (a ball overlapping a face by
+/// rounding, or touching it) and its slope a1 + 2a2·τ provably stays positive on [0, h]: h
+/// finite, a1 ≥ 1e-290, and max(0, −2a2)·h ≤ 0.75·a1. Then the root solver on [0, h] returns
+/// +infinity (a crossing from ≤ 0 is upward): its walk's one critical point, −a1/(2a2), is
+/// negative or at least h/0.75 before its one rounding, so not inside (0, h), and the one piece
+/// [0, h] starts at q(0) = a0 ≤ 0 (degree 1, a2 = 0, has no critical point at all); this
+/// returns the same without running it.
+inline bool leaves_from_overlap(double a0, double a1, double a2, double h) {
+    if (!(a0 <= 0.0 && a0 > -kInf && a1 >= 1e-290 && a1 < kInf && h < kInf)) return false;
+    if (!(std::fabs(a2) < kInf)) return false;
+    return (a2 < 0.0 ? -2.0 * a2 * h : 0.0) <= 0.75 * a1;
+}
+
 /// True if |Δp + Δv·τ + ½Δa·τ²| provably stays above D + kClear for all τ in [0, h], by two
 /// lower bounds on the distance: its projection on Δp (|x| ≥ x·u/|u|) and on Δv's normal (the
 /// velocity term vanishes there). Then the exact contact quartic is ≥ 2·D·kClear on [0, h], far
@@ -198,6 +211,7 @@ inline Prediction line(const Mover& m, const CushionLine& l, double R) {
             return {0.0, true};
     }
     if (detail::quadratic_stays_positive(s0, s1, 0.5 * s2, m.horizon)) return {};
+    if (detail::leaves_from_overlap(s0, s1, 0.5 * s2, m.horizon)) return {};
     const double t = roots::first_downward_crossing({s0, s1, 0.5 * s2, 0.0, 0.0}, 0.0, m.horizon);
     if (std::isinf(t) || !within(t)) return {};
     return {t, false};

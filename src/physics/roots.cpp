@@ -499,6 +499,30 @@ inline bool rises_throughout(const Poly4& c, double lo, double hi) {
     return c[0] < kInf && take <= 0.75 * c[1];
 }
 
+/// True if the quartic's derivative p' (its coefficients computed as derivative<4> does:
+/// d_i = (i + 1)·c[i + 1]) provably stays positive on [0, hi] as computed, so that no
+/// evaluation of p' there can see a value ≤ 0, nor one within its noise band: hi finite,
+/// every coefficient finite, d_0 = c[1] ≥ 1e-290 (far above underflow), the positive terms at
+/// hi below 1e300 (no overflow), and Σ_{i≥1} max(0, −d_i)·hi^i ≤ 0.75·d_0 (as for
+/// rises_throughout: then p' ≥ P/4 at every t of [0, hi], P its positive terms, far above the
+/// rounding of any evaluation, < 11ε·P, and above the noise band, 3ε·(P + N) < 6ε·P).
+/// With p(0) = c[0] ≤ 0 the walk of first_down<4> on [0, hi] then finds no sign change of p'
+/// (every critical point candidate, and hi, has p' > 0), so its one piece is [0, hi], whose
+/// crossing, if any, is upward (p(0) < 0) or none (p(0) = 0): it returns +infinity; this
+/// returns the same without the walk (a touching pair separating, overlapping by rounding).
+inline bool slope_stays_positive(const Poly4& c, double hi) {
+    if (!(c[1] >= 1e-290 && hi < kInf)) return false;  // (first: an approaching pair fails here)
+    double take = 0.0, give = c[1], power = hi;     // hi^i
+    for (int i = 1; i <= 3; ++i) {
+        const double d = static_cast<double>(i + 1) * c[i + 1];
+        if (!(std::fabs(d) < kInf)) return false;
+        if (d < 0.0) take += -d * power;
+        else give += d * power;
+        power *= hi;
+    }
+    return c[1] < kInf && give < 1e300 && take <= 0.75 * c[1];
+}
+
 }  // namespace
 
 double eval(const Poly4& c, double t) {
@@ -514,7 +538,11 @@ double first_downward_crossing(const Poly4& c, double lo, double hi) {
             // The usual case (a contact quartic) by its convexity pieces; the walk where they
             // cannot decide (see roots_convex_pieces.cpp), such as a start with p(lo) ≤ 0
             // (touching bodies), which is asked here without the call where lo = 0.
-            if (lo == 0.0 && !(c[0] > 0.0)) return first_down<4>(lowest<4>(c), lo, hi);
+            if (lo == 0.0 && !(c[0] > 0.0)) {
+                // (c[0] ≤ 0 and finite, and p' provably positive: none, see slope_stays_positive)
+                if (c[0] <= 0.0 && c[0] > -kInf && slope_stays_positive(c, hi)) return kInf;
+                return first_down<4>(lowest<4>(c), lo, hi);
+            }
             const convex_pieces::Answer r = convex_pieces::first_downward_crossing(c, lo, hi);
             switch (r.outcome) {
                 case convex_pieces::Outcome::none:

@@ -7,8 +7,10 @@
 #include <array>
 #include <bit>
 #include <cassert>
+#include <cmath>
 #include <cstdint>
 #include <limits>
+#include <span>
 
 #include "physics/collide.hpp"
 #include "physics/cue_strike.hpp"
@@ -93,7 +95,7 @@ public:
             BallState s = balls[i];
             if (s.motion != Motion::pocketed) s = motion::settle(params_, s);
             segments_[i].push_back({0.0, s});
-            live_[i] = make_live(s, 0.0);
+            set_live(i, s, 0.0);
         }
         // Pair (i, j > i) is predicted by predict_for(j), once own_[j] is known.
         for (std::size_t i = 0; i < n_; ++i) predict_for(i, ~0u << i << 1);
@@ -160,12 +162,22 @@ private:
     detect::Mover mover(std::size_t i, double until) const {
         return detect::make_mover(kinematics(i), until - now_, rolling(i));
     }
-    bool active(std::size_t i) const { return live_[i].motion != Motion::pocketed; }
+    bool active(std::size_t i) const { return ((active_ >> i) & 1u) != 0; }
     bool rolling(std::size_t i) const { return live_[i].motion == Motion::rolling; }
 
     void start_segment(std::size_t i, const BallState& s) {
         segments_[i].push_back({now_, s});
-        live_[i] = make_live(s, now_);
+        set_live(i, s, now_);
+    }
+    /// Sets ball i's Live entry for a segment starting at t0 in state s, and its bits in
+    /// active_ and still_.
+    void set_live(std::size_t i, const BallState& s, double t0) {
+        const Live& l = live_[i] = make_live(s, t0);
+        const std::uint32_t bit = 1u << i;
+        active_ = s.motion == Motion::pocketed ? active_ & ~bit : active_ | bit;
+        const bool still = l.vel.x == 0.0 && l.vel.y == 0.0 && l.acc.x == 0.0 &&
+                           l.acc.y == 0.0 && std::isfinite(l.pos.x) && std::isfinite(l.pos.y);
+        still_ = still ? still_ | bit : still_ & ~bit;
     }
     Live make_live(const BallState& s, double t0) const {
         const Vec2 a = motion::acceleration(params_, s);
@@ -190,11 +202,12 @@ private:
 
     /// The first of all candidates (own and pair) in the total order, or Candidate{} if none
     /// is before it: the first of the per-ball firsts, which predict_for keeps up to date.
+    /// (A pointer to the best so far, not a copy of it at each improvement.)
     Candidate earliest() const {
-        Candidate best;
+        const Candidate* best = &none_;
         for (std::size_t i = 0; i < n_; ++i)
-            if (first_[i].before(best)) best = first_[i];
-        return best;
+            if (first_[i].before(*best)) best = &first_[i];
+        return *best;
     }
 
     /// The first of ball k's own candidate and all its pairs. Pairs of k of equal time are
@@ -282,21 +295,27 @@ private:
             m = m.within(tau);
         };
         // The faces and noses of a pocket out of the ball's reach are skipped (see
-        // group_faces); the rest are tried in the same order as ever.
+        // group_faces); the rest are tried in the same order as ever. (The tables' vectors as
+        // spans held here: through the references the compiler reloads each vector's bounds
+        // at every use, since the stores in between might alias them.)
+        const std::span<const CushionLine> faces = table_.lines;
+        const std::span<const JawNose> jaw_noses = table_.noses;
+        const std::span<const Pocket> pockets = table_.pockets;
+        const std::span<const double> drop_lateral = drop_lateral_;
         auto try_line = [&](std::size_t g) {
-            const detect::Prediction p = detect::line(m, table_.lines[g], R);
+            const detect::Prediction p = detect::line(m, faces[g], R);
             consider(p.tau, Kind::line, static_cast<int>(g), p.pushing);
         };
         auto try_nose = [&](std::size_t g) {
-            const detect::Prediction p = detect::nose(m, table_.noses[g], R);
+            const detect::Prediction p = detect::nose(m, jaw_noses[g], R);
             consider(p.tau, Kind::nose, static_cast<int>(g), p.pushing);
         };
         if (!grouped_) {
-            for (std::size_t g = 0; g < table_.lines.size(); ++g) try_line(g);
-            for (std::size_t g = 0; g < table_.noses.size(); ++g) try_nose(g);
+            for (std::size_t g = 0; g < faces.size(); ++g) try_line(g);
+            for (std::size_t g = 0; g < jaw_noses.size(); ++g) try_nose(g);
         }
         std::uint64_t lines = lines_always_, noses = noses_always_;
-        for (const FaceGroup& fg : groups_) {
+        for (const FaceGroup& fg : std::span<const FaceGroup>(groups_)) {
             const double limit = fg.radius + R + m.reach * (1.0 + 1e-9) + 1e-5;
             if (norm2(m.k.p - fg.centre) > limit * limit) continue;  // (false if reach is ∞)
             lines |= fg.lines;
@@ -306,8 +325,8 @@ private:
             try_line(static_cast<std::size_t>(std::countr_zero(lines)));
         for (; noses != 0; noses &= noses - 1)
             try_nose(static_cast<std::size_t>(std::countr_zero(noses)));
-        for (std::size_t g = 0; g < table_.pockets.size(); ++g) {
-            consider(detect::drop(m, table_.pockets[g], drop_lateral_[g]), Kind::drop,
+        for (std::size_t g = 0; g < pockets.size(); ++g) {
+            consider(detect::drop(m, pockets[g], drop_lateral[g]), Kind::drop,
                      static_cast<int>(g), false);
         }
         own_[i] = own;
@@ -322,42 +341,51 @@ private:
         const double reach_i_own =
             detect::reach_bound(speed_i, live_[i].accel, own_[i].time - now_, rolling_i);
         disc_[i] = {ki.p, reach_i_own};
-        for (std::size_t j = 0; j < n_; ++j) {
-            if (j == i || !active(j) || ((later >> j) & 1u) != 0) continue;
+        // Ball i's values used by every pair, held here: each store below, and each call of
+        // the solver, would make the compiler load them again from the members.
+        const double now = now_, own_i = own_[i].time, accel_i = live_[i].accel;
+        std::uint32_t paired_i = 0;
+        // (the other active balls not in `later`, in increasing j: a bit walk, not a test of
+        // every index; two still balls are skipped, see still_)
+        std::uint32_t others = active_ & ~later & ~(1u << i);
+        if (((still_ >> i) & 1u) != 0) others &= ~still_;
+        for (; others != 0; others &= others - 1) {
+            const auto j = static_cast<std::size_t>(std::countr_zero(others));
             // Both discs (up to each ball's own next event, which bounds the pair's horizon)
             // more than 2R + 1e-5 m apart: the balls stay that far apart, so the contact
             // quartic is ≥ 4R·1e-5 on the whole horizon, far above its rounding (its terms are
             // below (|Δp| + 3·(reach_i + reach_j))², a few m², kept so by the 50 m cap), and
             // the tests below or the solver would give none. One test instead of the reach
             // bounds and positions.
-            const double apart = disc_[i].reach + disc_[j].reach;
+            const double apart = reach_i_own + disc_[j].reach;  // (disc_[i].reach)
             const double clear = 2 * R + apart + 1e-5;
             if (apart < 50.0 && norm2(disc_[j].centre - ki.p) > clear * clear) continue;
-            const double until = std::min(own_[i].time, own_[j].time);
-            if (!(until >= now_)) continue;
-            const double h = until - now_;
+            const double until = std::min(own_i, own_[j].time);
+            if (!(until >= now)) continue;
+            const double h = until - now;
             const bool rolling_j = rolling(j);
             // |v_j(now)| ≤ |v_j(t0)| + |a_j|·(now − t0): no square root per pair.
-            const double speed_j = live_[j].speed + live_[j].accel * (now_ - live_[j].t0);
-            const double reach_i =
-                until == own_[i].time
-                    ? reach_i_own
-                    : detect::reach_bound(speed_i, live_[i].accel, h, rolling_i);
+            const double speed_j = live_[j].speed + live_[j].accel * (now - live_[j].t0);
+            const double reach_i = until == own_i
+                                       ? reach_i_own
+                                       : detect::reach_bound(speed_i, accel_i, h, rolling_i);
+            // (reach_bound is at least 1e-12, never 0: no test for two balls that cannot move)
             const double reach_j = detect::reach_bound(speed_j, live_[j].accel, h, rolling_j);
-            if (reach_i == 0 && reach_j == 0) continue;
             const motion::Kinematics kj = kinematics(j);
             const double limit = 2 * R + reach_i + reach_j;
             if (norm2(kj.p - ki.p) > limit * limit) continue;
             // (screened: |Δp|² ≤ limit² here, and circle_contact's limit is the same sum up to
-            // an ulp, its test 1e-9 looser)
-            const detect::Prediction p = detect::ball_ball(
-                {ki, h, reach_i, rolling_i}, {kj, h, reach_j, rolling_j}, R, h, true);
+            // an ulp, its test 1e-9 looser). What detect::ball_ball computes, with the same
+            // arguments, less its test for two reaches of 0, which reach_bound never returns.
+            const detect::Prediction p = detect::detail::circle_contact(
+                kj.p - ki.p, kj.v - ki.v, kj.a - ki.a, 2.0 * R, reach_i + reach_j, h, true);
             if (std::isinf(p.tau)) continue;
-            pair_time_[i][j] = pair_time_[j][i] = now_ + p.tau;
+            pair_time_[i][j] = pair_time_[j][i] = now + p.tau;
             pair_pushing_[i][j] = pair_pushing_[j][i] = p.pushing;
-            paired_[i] |= 1u << j;
+            paired_i |= 1u << j;
             paired_[j] |= 1u << i;
         }
+        paired_[i] = paired_i;
     }
 
     /// Groups each pocket's jaw faces and noses in a circle about the pocket's centre that holds
@@ -533,10 +561,21 @@ private:
     std::uint64_t lines_always_ = 0, noses_always_ = 0;  ///< faces and noses of no pocket
     bool grouped_ = false;  ///< false: more than 64 faces or noses, none skipped
     std::array<Live, kMaxBalls> live_{};
+    /// A bit per ball that is not pocketed (live_[i].motion != Motion::pocketed), kept by
+    /// set_live: the pair loop walks these bits.
+    std::uint32_t active_ = 0;
+    /// A bit per ball whose segment has velocity and acceleration exactly 0 (at rest, or
+    /// spinning in place) at a finite position, kept by set_live. Two such balls have no
+    /// contact: their Δv and Δa are ±0, so circle_contact either returns none before the
+    /// solver (out of reach; or touching, with a rate and a curvature of ±0, neither
+    /// approaching nor pushing) or builds the quartic {|Δp|² − D², ±0, ±0, ±0, ±0}, a constant
+    /// (degree 0), for which first_downward_crossing returns none; so their pair is not tried.
+    std::uint32_t still_ = 0;
     std::array<Candidate, kMaxBalls> own_{};
     std::array<Disc, kMaxBalls> disc_{};  ///< per ball, set by predict_candidates
     /// Per ball k, the first of own_[k] and every pair of k (kept by predict_for).
     std::array<Candidate, kMaxBalls> first_{};
+    const Candidate none_{};  ///< no candidate (time ∞): where earliest starts
     /// Per ball k, the other ball of first_[k] where that is a pair of k, else k.
     std::array<std::size_t, kMaxBalls> first_with_{};
     /// Per ball i, a bit for each other ball k whose first is its pair with i (first_with_[k]
