@@ -106,10 +106,6 @@ namespace {
 }
 }  // namespace
 #include "physics/roots_convex_pieces_body.inl"
-
-double compensated_value(const Poly4& c, double t) {
-    return accurate_value(c, t);
-}
 }  // namespace split_product
 
 #if COOLAABER_FUSED_PRODUCT
@@ -164,10 +160,6 @@ namespace {
 
 }  // namespace
 #include "physics/roots_convex_pieces_body.inl"
-
-double compensated_value(const Poly4& c, double t) {
-    return accurate_value(c, t);
-}
 }  // namespace fused_product
 #pragma GCC pop_options
 

@@ -1,6 +1,7 @@
 // The body of the quartic fast path (see roots_convex_pieces.cpp, which includes it twice: once
 // built for any x86-64, once for CPUs with FMA, inside the namespace of each build; each build
-// defines accurate_value() before it). Not a header: no include guard, nothing of its own to
+// defines accurate_value() before it, and gets first_downward_crossing and compensated_value
+// from it). Not a header: no include guard, nothing of its own to
 // include (roots_convex_pieces.cpp includes <cmath> and <limits> first).
 namespace {
 
@@ -357,4 +358,9 @@ Answer first_downward_crossing(const Poly4& c, double lo, double hi) {
         sampled = false;
     }
     return {Outcome::none};
+}
+
+/// This build's compensated value of p(t) (for the test that compares the builds).
+double compensated_value(const Poly4& c, double t) {
+    return accurate_value(c, t);
 }
