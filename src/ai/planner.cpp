@@ -130,6 +130,7 @@ Plan plan_choice(const Position& pos, double sigma_deg) {
         }
     }
     p.expected_success = best;
+    p.expected_value = best;
     return p;
 }
 
@@ -145,6 +146,7 @@ Plan plan_break(Search& s) {
     p.decision = decision_of(cands[best]);
     p.kind = cands[best].kind;
     p.expected_success = scores[best].success;
+    p.expected_value = scores[best].value;
     p.simulations = s.simulations;
     return p;
 }
@@ -238,6 +240,7 @@ Plan plan(const Position& pos, const PlanSettings& settings, std::uint64_t seed)
     out.decision = decision_of(chosen);
     out.kind = chosen.kind;
     out.expected_success = chosen_success;
+    out.expected_value = chosen_value;
     out.simulations = s.simulations;
     return out;
 }

@@ -28,6 +28,7 @@ struct PlanSettings {
 struct Plan {
     game::Decision decision;
     double expected_success = 0.0;  ///< pots: chance to stay at the table; safeties: of no foul
+    double expected_value = 0.0;    ///< the planner's value of the stroke (a rough chance to win)
     std::int64_t simulations = 0;   ///< physics simulations run for this decision
     Kind kind = Kind::pot;          ///< what sort of stroke it is (a choice: Kind::pot, unused)
 };
