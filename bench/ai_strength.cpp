@@ -24,6 +24,7 @@
 #include "physics/rack.hpp"
 #include "physics/simulate.hpp"
 #include "rules/judge.hpp"
+#include "two_ball_layout.hpp"
 
 namespace {
 
@@ -143,16 +144,10 @@ void shots(const Args& a) {
     Timing timing;
     for (int i = 0; i < a.n; ++i) {
         ai::Position pos = base_position(rules::Game::nine_ball);
-        const double R = pos.params.ball_radius, L = pos.table.length(), W = pos.table.width();
         pos.state.shot = rules::Shot::normal;
         pos.state.cue_ball = rules::CueBall::on_table;
         pos.state.on_table = {9};
-        physics::Vec2 cue, obj;
-        do {
-            cue = {R + rng.uniform() * (L - 2 * R), R + rng.uniform() * (W - 2 * R)};
-            obj = {R + rng.uniform() * (L - 2 * R), R + rng.uniform() * (W - 2 * R)};
-        } while (physics::norm(cue - obj) < 2.5 * R);
-        pos.state.positions = {{0, cue}, {9, obj}};
+        pos.state.positions = bench::two_ball_layout(pos.table, pos.params.ball_radius, rng);
         const double q = ai::best_shot_chance(pos, pos.state, ai::heading_sigma_deg);
         const int bin = std::clamp(static_cast<int>((1.0 - q) * 5.0), 0, 4);  // 0: easiest
         const Played p = play(pos, settings, a.seed * 7919 + static_cast<std::uint64_t>(i),

@@ -26,6 +26,7 @@
 #include "ai/position.hpp"
 #include "physics/rack.hpp"
 #include "physics/simulate.hpp"
+#include "two_ball_layout.hpp"
 
 namespace {
 
@@ -56,16 +57,10 @@ ai::Position empty_position(rules::Game game) {
     return p;
 }
 
-// The cue ball and the 9 anywhere, 2.5 R apart at least (9-ball: the 9 is the target).
+// The cue ball and the 9 (9-ball: the 9 is the target).
 ai::Position random_layout(physics::SplitMix64& rng) {
     ai::Position pos = empty_position(rules::Game::nine_ball);
-    const double R = pos.params.ball_radius, L = pos.table.length(), W = pos.table.width();
-    physics::Vec2 cue, obj;
-    do {
-        cue = {R + rng.uniform() * (L - 2 * R), R + rng.uniform() * (W - 2 * R)};
-        obj = {R + rng.uniform() * (L - 2 * R), R + rng.uniform() * (W - 2 * R)};
-    } while (physics::norm(cue - obj) < 2.5 * R);
-    pos.state.positions = {{0, cue}, {9, obj}};
+    pos.state.positions = bench::two_ball_layout(pos.table, pos.params.ball_radius, rng);
     pos.state.on_table = {9};
     return pos;
 }
