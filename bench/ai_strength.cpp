@@ -100,8 +100,8 @@ void print_shot(const ai::Position& pos, const ai::Plan& plan, const rules::Game
                      pos.state.group_a ? static_cast<int>(*pos.state.group_a) : -1);
     }
     std::fprintf(stderr,
-                 "q %.2f kind %d balls %zu call %d/%d speed %.2f side %.2f top %.2f exp %.2f value %.3f "
-                 "sims %lld -> foul %d next %d over %d\n",
+                 "q %.2f kind %d balls %zu call %d/%d speed %.2f side %.2f top %.2f exp %.2f "
+                 "value %.3f sims %lld -> foul %d next %d over %d\n",
                  ai::best_shot_chance(pos, pos.state, ai::heading_sigma_deg),
                  static_cast<int>(plan.kind), pos.state.on_table.size(), s.call.ball,
                  s.call.pocket, stroke.speed, stroke.side, stroke.top, plan.expected_success,
