@@ -108,14 +108,14 @@ void play_pots(const ai::Position& pos, const Args& a, const std::vector<ai::Noi
     effort.spins = 2;   // stun and follow
     std::int64_t simulations = 0;
     const physics::Vec2 cue = pos.state.positions.at(0);
+    const std::vector<physics::BallState> balls = ai::layout(pos.state, cue);
     for (const ai::RankedAim& r : ai::ranked_aims(pos, cue, ai::heading_sigma_deg)) {
         if (a.pockets != "all" && is_side(r.aim.pocket) != (a.pockets == "side")) continue;
         for (const ai::Candidate& c : ai::pot_strokes(pos, cue, false, r, effort, simulations)) {
             Row row{r.aim};
             for (const ai::NoiseDraw& d : draws) {
                 const physics::Stroke stroke = ai::with_draw(c.stroke, d, a.noise);
-                const physics::Shot shot =
-                    physics::simulate(pos.table, pos.params, ai::layout(pos.state, cue), &stroke);
+                const physics::Shot shot = physics::simulate(pos.table, pos.params, balls, &stroke);
                 for (const physics::Event& e : shot.events())
                     if (e.type == physics::EventType::pocket && e.balls[0].id == r.aim.ball &&
                         e.pocket == r.aim.pocket)
