@@ -64,7 +64,7 @@ physics::Stroke with_draw(const physics::Stroke& stroke, const NoiseDraw& d, dou
 }
 
 Trial Evaluator::play(const Candidate& c, const physics::Stroke& stroke, bool assign_call,
-                      rules::Call* call, const Effort* deeper) const {
+                      rules::Call* call, const Effort* deeper, bool with_leave) const {
     rules::GameState s = pos_.state;
     if (c.cue_pos) s.positions[0] = *c.cue_pos;
     const physics::Vec2 cue = s.positions.at(0);
@@ -87,6 +87,10 @@ Trial Evaluator::play(const Candidate& c, const physics::Stroke& stroke, bool as
         !v.game_over && ((v.choice && v.choice->by == me) || (!v.choice && v.next_shooter == me));
     t.shallow = verdict_value(pos_, s, v, sigma_deg_);
     t.value = t.shallow;
+    if (with_leave && stays && !v.choice && v.state.positions.count(0) != 0) {
+        if (std::optional<BestAim> b = best_aim(pos_, v.state, v.state.positions.at(0), sigma_deg_))
+            t.leave = b->aim.ball;
+    }
     if (deeper && stays && !v.choice) {
         t.value = staying_value(
             s, v.state, next_turn_value(pos_, v.state, *deeper, scale_, sigma_deg_, t.simulations));
@@ -97,9 +101,9 @@ Trial Evaluator::play(const Candidate& c, const physics::Stroke& stroke, bool as
     return t;
 }
 
-Trial Evaluator::nominal(Candidate& c) const {
-    if (c.kind == Kind::kick) return play(c, c.stroke, true, &c.call);
-    return play(c, c.stroke, false, nullptr);
+Trial Evaluator::nominal(Candidate& c, bool with_leave) const {
+    if (c.kind == Kind::kick) return play(c, c.stroke, true, &c.call, nullptr, with_leave);
+    return play(c, c.stroke, false, nullptr, nullptr, with_leave);
 }
 
 Trial Evaluator::trial(const Candidate& c, const NoiseDraw& draw) const {

@@ -33,6 +33,9 @@ struct Trial {
     bool success = false;  ///< pots: the shooter stays at the table (or wins); safeties: no foul
     bool foul = false;
     std::int64_t simulations = 1;  ///< physics simulations this trial ran (the second ply's too)
+    /// Evaluator::nominal with `with_leave` only: the ball of the shooter's likeliest next pot
+    /// where the balls stop, when he stays at the table with the cue ball on it; else −1.
+    int leave = -1;
 };
 
 /// The mean of a candidate's trials.
@@ -41,6 +44,7 @@ struct Score {
     double success = 0.0;
     int samples = 0;
     bool foul = false;  ///< the noiseless stroke fouls
+    int leave = -1;     ///< the noiseless stroke's Trial::leave
 };
 
 class Evaluator {
@@ -50,8 +54,9 @@ class Evaluator {
     Evaluator(const Position& pos, double scale, double sigma_deg)
         : pos_(pos), scale_(scale), sigma_deg_(sigma_deg) {}
 
-    /// Plays the candidate without noise; a kick gets its call from what it pockets.
-    Trial nominal(Candidate& c) const;
+    /// Plays the candidate without noise; a kick gets its call from what it pockets. With
+    /// `with_leave`, the trial's `leave` is found too.
+    Trial nominal(Candidate& c, bool with_leave = false) const;
     /// Plays the candidate with one noise draw.
     Trial trial(const Candidate& c, const NoiseDraw& draw) const;
     /// Plays the candidate with one noise draw (none at scale 0) and, where the shooter stays at
@@ -62,7 +67,7 @@ class Evaluator {
 
   private:
     Trial play(const Candidate& c, const physics::Stroke& stroke, bool assign_call,
-               rules::Call* call, const Effort* deeper = nullptr) const;
+               rules::Call* call, const Effort* deeper = nullptr, bool with_leave = false) const;
 
     const Position& pos_;
     double scale_;

@@ -30,6 +30,11 @@ struct Effort {
     int next_speeds = 3;      ///< second ply: speeds per aim
     int next_spins = 3;       ///< second ply: spins per aim
     int refine_steps = 2;     ///< secant steps of the heading refinement (aim.hpp) per pot
+    /// 8-ball: of the shortlist, the finalists and the deep finalists, up to this share goes
+    /// first to the best stroke of each distinct leave (the ball of the next pot it leaves,
+    /// played without noise; selection.hpp), so that strokes leaving another ball than the
+    /// easiest reach the second ply too.
+    double distinct_leaves = 0.0;
 };
 
 /// The effort of `level` (clamped to 1–5).

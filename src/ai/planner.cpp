@@ -10,6 +10,7 @@
 #include "ai/level.hpp"
 #include "ai/parallel.hpp"
 #include "ai/placement.hpp"
+#include "ai/selection.hpp"
 #include "ai/table_value.hpp"
 #include "rules/eight_ball.hpp"
 
@@ -41,24 +42,14 @@ void score_nominal(Search& s, std::vector<Candidate>& cands, std::vector<Score>&
     nominal.resize(cands.size());
     parallel_for(cands.size() - from, s.workers, [&](std::size_t k) {
         const std::size_t i = from + k;
-        const Trial t = s.eval.nominal(cands[i]);
+        const Trial t = s.eval.nominal(cands[i], true);
         // A pot that works without noise still misses now and then: rank by its chance.
         const double value = cands[i].kind == Kind::pot && s.eval.scale() > 0.0
                                  ? cands[i].prior * t.value + (1.0 - cands[i].prior) * miss_value
                                  : t.value;
-        nominal[i] = Score{value, t.success ? 1.0 : 0.0, 1, t.foul};
+        nominal[i] = Score{value, t.success ? 1.0 : 0.0, 1, t.foul, t.leave};
     });
     s.simulations += static_cast<std::int64_t>(cands.size() - from);
-}
-
-// The indices of the `n` best of `scores` among `which` (ties: the earlier index).
-std::vector<std::size_t> best_of(const std::vector<Score>& scores, std::vector<std::size_t> which,
-                                 std::size_t n) {
-    std::stable_sort(which.begin(), which.end(), [&](std::size_t a, std::size_t b) {
-        return scores[a].value > scores[b].value;
-    });
-    if (which.size() > n) which.resize(n);
-    return which;
 }
 
 std::vector<std::size_t> all_indices(std::size_t n) {
@@ -73,14 +64,19 @@ std::vector<std::size_t> all_indices(std::size_t n) {
 std::size_t choose_under_noise(Search& s, std::vector<Candidate>& cands,
                                std::vector<Score>& nominal, std::vector<Score>& noisy,
                                std::size_t shortlist, bool deeper) {
-    std::vector<std::size_t> list = best_of(nominal, all_indices(cands.size()), shortlist);
+    // Only where the shooter chooses the order of his balls (8-ball); in 9-ball the next ball is
+    // always the lowest, and the scores already rank the position on it.
+    const double share =
+        deeper && s.pos.ruleset.game == rules::Game::eight_ball ? s.effort.distinct_leaves : 0.0;
+    std::vector<std::size_t> list =
+        distinct_best_of(nominal, nominal, all_indices(cands.size()), shortlist, share);
     noisy.assign(cands.size(), Score{});
     const std::size_t n = s.eval.scale() == 0.0 ? 1 : static_cast<std::size_t>(s.effort.samples);
     s.simulations += score_under_noise(s.eval, cands, list, s.draws, 0, n, noisy, s.workers);
     std::size_t drawn = n;
     if (s.eval.scale() > 0.0 && s.effort.finalists > 1) {
-        std::vector<std::size_t> finals =
-            best_of(noisy, list, static_cast<std::size_t>(s.effort.finalists));
+        std::vector<std::size_t> finals = distinct_best_of(
+            noisy, nominal, list, static_cast<std::size_t>(s.effort.finalists), share);
         s.simulations += score_under_noise(s.eval, cands, finals, s.draws, n, n, noisy, s.workers);
         list = finals;
         drawn = 2 * n;
@@ -100,7 +96,8 @@ std::size_t choose_under_noise(Search& s, std::vector<Candidate>& cands,
         list.insert(list.end(), added.begin(), added.end());
     }
     if (deeper && s.effort.deep_finalists > 0) {
-        list = best_of(noisy, list, static_cast<std::size_t>(s.effort.deep_finalists));
+        list = distinct_best_of(noisy, nominal, list,
+                                static_cast<std::size_t>(s.effort.deep_finalists), share);
         const std::size_t m =
             s.eval.scale() == 0.0 ? 1 : static_cast<std::size_t>(s.effort.deep_samples);
         s.simulations += score_deep(s.eval, cands, list, s.draws, m, s.effort, noisy, s.workers);
