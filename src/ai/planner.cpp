@@ -36,13 +36,22 @@ double normalized(double heading_deg) {
     return h;
 }
 
-// Noiseless play of candidates [from, end): their nominal scores.
+// The share of each round of choose_under_noise kept for distinct leaves (selection.hpp): only
+// where the shooter chooses the order of his balls (8-ball); in 9-ball the next ball is always
+// the lowest, and the scores already rank the position on it.
+double leave_share(const Search& s) {
+    return s.pos.ruleset.game == rules::Game::eight_ball ? s.effort.distinct_leaves : 0.0;
+}
+
+// Noiseless play of candidates [from, end): their nominal scores (with their leaves where the
+// search keeps places for distinct ones).
 void score_nominal(Search& s, std::vector<Candidate>& cands, std::vector<Score>& nominal,
                    std::size_t from) {
     nominal.resize(cands.size());
+    const bool with_leave = leave_share(s) > 0.0;
     parallel_for(cands.size() - from, s.workers, [&](std::size_t k) {
         const std::size_t i = from + k;
-        const Trial t = s.eval.nominal(cands[i], true);
+        const Trial t = s.eval.nominal(cands[i], with_leave);
         // A pot that works without noise still misses now and then: rank by its chance.
         const double value = cands[i].kind == Kind::pot && s.eval.scale() > 0.0
                                  ? cands[i].prior * t.value + (1.0 - cands[i].prior) * miss_value
@@ -64,10 +73,7 @@ std::vector<std::size_t> all_indices(std::size_t n) {
 std::size_t choose_under_noise(Search& s, std::vector<Candidate>& cands,
                                std::vector<Score>& nominal, std::vector<Score>& noisy,
                                std::size_t shortlist, bool deeper) {
-    // Only where the shooter chooses the order of his balls (8-ball); in 9-ball the next ball is
-    // always the lowest, and the scores already rank the position on it.
-    const double share =
-        deeper && s.pos.ruleset.game == rules::Game::eight_ball ? s.effort.distinct_leaves : 0.0;
+    const double share = deeper ? leave_share(s) : 0.0;
     std::vector<std::size_t> list =
         distinct_best_of(nominal, nominal, all_indices(cands.size()), shortlist, share);
     noisy.assign(cands.size(), Score{});
