@@ -1,0 +1,103 @@
+#!/usr/bin/env python3
+"""Reads the standard error of `ai_strength runouts --paired 1` (docs/ai.md, "Strength").
+
+    compare BASE ARM   racks cleared by each of two arms on the same racks, the racks only one
+                       cleared, and z = (only arm - only base) / sqrt(both): about one
+                       standard error per unit
+    needed LOG...      8-ball, with AI_VERBOSE=1 AI_VERBOSE_LAYOUT=1: by the balls the
+                       shooter still needs (his group's and the 8), the shots, the share made,
+                       the share with a pot of chance 0.9 or more on, and the runs that ended there
+
+    AI_VERBOSE=1 AI_VERBOSE_LAYOUT=1 ai_strength runouts --game 8ball --n 300 --seed 5 \\
+        --paired 1 2>arm.log
+    python3 scripts/runout_logs.py compare base.log arm.log
+"""
+
+import math
+import re
+import sys
+from collections import defaultdict
+
+SHOT = re.compile(
+    r"layout (?P<layout>.*) group_a (?P<group>-?\d+) q (?P<q>[\d.]+) kind (?P<kind>\d).*"
+    r"-> foul (?P<foul>\d) next (?P<next>-?\d) over (?P<over>\d)"
+)
+BREAK_KIND = 3
+
+
+def racks(path):
+    """Yields (cleared, [shot lines]) per rack, in the order played."""
+    shots = []
+    with open(path, encoding="utf-8") as f:
+        for line in f:
+            if line.startswith("rack "):
+                _, index, cleared = line.split()
+                yield int(index), cleared == "1", shots
+                shots = []
+            else:
+                shots.append(line)
+
+
+def compare(base_path, arm_path):
+    base = {i: c for i, c, _ in racks(base_path)}
+    arm = {i: c for i, c, _ in racks(arm_path)}
+    common = sorted(set(base) & set(arm))
+    if not common:
+        sys.exit("no rack is in both logs: were both run with --paired 1 and the same --seed?")
+    only_base = sum(1 for i in common if base[i] and not arm[i])
+    only_arm = sum(1 for i in common if arm[i] and not base[i])
+    z = (only_arm - only_base) / math.sqrt(max(only_base + only_arm, 1))
+    print(f"racks {len(common)}: base {sum(base[i] for i in common)}, "
+          f"arm {sum(arm[i] for i in common)}; only base {only_base}, only arm {only_arm}; "
+          f"z {z:.2f}")
+
+
+def needed(group, layout):
+    """The balls player A still needs (8-ball), or None on an open table."""
+    if group < 0:
+        return None
+    ids = [int(item.split(":")[0]) for item in layout.split()]
+    mine = range(1, 8) if group == 0 else range(9, 16)
+    return sum(1 for i in ids if i in mine) + 1
+
+
+def by_needed(paths):
+    shots = defaultdict(lambda: [0, 0, 0])  # shots, made, easy
+    ended = defaultdict(int)
+    for path in paths:
+        for _, cleared, lines in racks(path):
+            last = None
+            for line in lines:
+                m = SHOT.search(line)
+                if not m or int(m["kind"]) == BREAK_KIND:
+                    continue
+                n = needed(int(m["group"]), m["layout"])
+                if n is None:
+                    continue
+                made = m["foul"] == "0" and (m["next"] == "0" or m["over"] == "1")
+                s = shots[n]
+                s[0] += 1
+                s[1] += made
+                s[2] += float(m["q"]) >= 0.9
+                last = n
+            if not cleared and last is not None:
+                ended[last] += 1
+    if not shots:
+        sys.exit("no 8-ball shot with a layout: run with AI_VERBOSE=1 AI_VERBOSE_LAYOUT=1")
+    print("needed  shots  made    q>=0.9  runs ended there")
+    for n in sorted(shots, reverse=True):
+        count, made, easy = shots[n]
+        print(f"{n:6d}  {count:5d}  {made / count:6.1%}  {easy / count:6.1%}  {ended[n]:5d}")
+
+
+def main(argv):
+    if len(argv) == 3 and argv[0] == "compare":
+        compare(argv[1], argv[2])
+    elif len(argv) >= 2 and argv[0] == "needed":
+        by_needed(argv[1:])
+    else:
+        sys.exit(__doc__)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])
