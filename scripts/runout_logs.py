@@ -5,7 +5,8 @@
                        cleared, and z = (only arm - only base) / sqrt(both): about one
                        standard error per unit
     needed LOG...      8-ball, with AI_VERBOSE=1 AI_VERBOSE_LAYOUT=1: by the balls the
-                       shooter still needs (his group's and the 8), the shots, the share made,
+                       shooter (player A, who runs the rack) still needs (his group's and the
+                       8), the shots, the share made,
                        the share with a pot of chance 0.9 or more on, and the runs that ended there
 
     AI_VERBOSE=1 AI_VERBOSE_LAYOUT=1 ai_strength runouts --game 8ball --n 300 --seed 5 \\
@@ -26,7 +27,7 @@ BREAK_KIND = 3
 
 
 def racks(path):
-    """Yields (cleared, [shot lines]) per rack, in the order played."""
+    """Yields (rack index, cleared, [its shot lines]) per rack, in the order played."""
     shots = []
     with open(path, encoding="utf-8") as f:
         for line in f:
