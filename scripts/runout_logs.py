@@ -6,8 +6,8 @@
                        standard error per unit
     needed LOG...      8-ball, with AI_VERBOSE=1 AI_VERBOSE_LAYOUT=1: by the balls the
                        shooter (player A, who runs the rack) still needs (his group's and the
-                       8), the shots, the share made,
-                       the share with a pot of chance 0.9 or more on, and the runs that ended there
+                       8), the shots, the share made, the share with a pot of chance 0.9 or
+                       more on, and the runs that ended there
 
     AI_VERBOSE=1 AI_VERBOSE_LAYOUT=1 ai_strength runouts --game 8ball --n 300 --seed 5 \\
         --paired 1 2>arm.log
