@@ -8,6 +8,7 @@
                        shooter (player A, who runs the rack) still needs (his group's and the
                        8), the shots, the share made, the share with a pot of chance 0.9 or
                        more on, and the runs that ended there
+    left LOG...        the same table by the object balls on the table (for 9-ball)
 
     AI_VERBOSE=1 AI_VERBOSE_LAYOUT=1 ai_strength runouts --game 8ball --n 300 --seed 5 \\
         --paired 1 2>arm.log
@@ -62,7 +63,13 @@ def needed(group, layout):
     return sum(1 for i in ids if i in mine) + 1
 
 
-def by_needed(paths):
+def balls_left(group, layout):
+    """The object balls on the table (the cue ball is left out)."""
+    del group
+    return sum(1 for item in layout.split() if item.split(":")[0] != "0")
+
+
+def by_balls(paths, count, heading):
     shots = defaultdict(lambda: [0, 0, 0])  # shots, made, easy
     ended = defaultdict(int)
     for path in paths:
@@ -72,7 +79,7 @@ def by_needed(paths):
                 m = SHOT.search(line)
                 if not m or int(m["kind"]) == BREAK_KIND:
                     continue
-                n = needed(int(m["group"]), m["layout"])
+                n = count(int(m["group"]), m["layout"])
                 if n is None:
                     continue
                 made = m["foul"] == "0" and (m["next"] == "0" or m["over"] == "1")
@@ -84,8 +91,9 @@ def by_needed(paths):
             if not cleared and last is not None:
                 ended[last] += 1
     if not shots:
-        sys.exit("no 8-ball shot with a layout: run with AI_VERBOSE=1 AI_VERBOSE_LAYOUT=1")
-    print("needed  shots  made    q>=0.9  runs ended there")
+        sys.exit("no shot with a layout (8-ball: after the group is set): run with "
+                 "AI_VERBOSE=1 AI_VERBOSE_LAYOUT=1")
+    print(f"{heading}  shots  made    q>=0.9  runs ended there")
     for n in sorted(shots, reverse=True):
         count, made, easy = shots[n]
         print(f"{n:6d}  {count:5d}  {made / count:6.1%}  {easy / count:6.1%}  {ended[n]:5d}")
@@ -95,7 +103,9 @@ def main(argv):
     if len(argv) == 3 and argv[0] == "compare":
         compare(argv[1], argv[2])
     elif len(argv) >= 2 and argv[0] == "needed":
-        by_needed(argv[1:])
+        by_balls(argv[1:], needed, "needed")
+    elif len(argv) >= 2 and argv[0] == "left":
+        by_balls(argv[1:], balls_left, "  left")
     else:
         sys.exit(__doc__)
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""scripts/runout_logs.py on small hand-written logs: the paired comparison and the table by
-the balls still needed."""
+"""scripts/runout_logs.py on small hand-written logs: the paired comparison and the tables by
+the balls still needed (8-ball) and by the balls left (9-ball)."""
 
 import os
 import subprocess
@@ -49,6 +49,18 @@ class RunoutLogs(unittest.TestCase):
         self.assertEqual(rows["3"], ["2", "100.0%", "100.0%", "0"])
         self.assertEqual(rows["2"], ["2", "50.0%", "50.0%", "1"])
         self.assertEqual(rows["1"], ["1", "100.0%", "100.0%", "0"])
+
+    def test_left_tables_shots_by_the_object_balls_on_the_table(self):
+        # 9-ball (no groups): the 8 and the 9 left with the cue ball in hand, then the 9 alone.
+        two = "8:1.5,0.5 9:2.0,0.5"
+        log = (shot(two, -1, 0.95, 0, 0) + shot("0:0.5,0.5 9:2.0,0.5", -1, 0.50, 0, 1) +
+               "rack 0 0\n" + shot(two, -1, 0.80, 0, 0) +
+               shot("0:0.5,0.5 9:2.0,0.5", -1, 0.99, 0, -1, over=1) + "rack 1 1\n")
+        r = run("left", self.write(log))
+        self.assertEqual(r.returncode, 0, r.stderr)
+        rows = {line.split()[0]: line.split()[1:] for line in r.stdout.splitlines()[1:]}
+        self.assertEqual(rows["2"], ["2", "100.0%", "50.0%", "0"])
+        self.assertEqual(rows["1"], ["2", "50.0%", "50.0%", "1"])
 
     def test_a_log_without_layouts_is_refused_with_the_fix(self):
         r = run("needed", self.write("rack 0 1\n"))
