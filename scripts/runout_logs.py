@@ -69,7 +69,8 @@ def balls_left(group, layout):
     return sum(1 for item in layout.split() if item.split(":")[0] != "0")
 
 
-def by_balls(paths, count, heading):
+def by_balls(paths, key, heading):
+    """Prints the table by key(group, layout) of each shot (shots without a key are skipped)."""
     shots = defaultdict(lambda: [0, 0, 0])  # shots, made, easy
     ended = defaultdict(int)
     for path in paths:
@@ -79,7 +80,7 @@ def by_balls(paths, count, heading):
                 m = SHOT.search(line)
                 if not m or int(m["kind"]) == BREAK_KIND:
                     continue
-                n = count(int(m["group"]), m["layout"])
+                n = key(int(m["group"]), m["layout"])
                 if n is None:
                     continue
                 made = m["foul"] == "0" and (m["next"] == "0" or m["over"] == "1")
