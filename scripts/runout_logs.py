@@ -94,7 +94,7 @@ def by_balls(paths, key, heading):
     if not shots:
         sys.exit("no shot with a layout (8-ball: after the group is set): run with "
                  "AI_VERBOSE=1 AI_VERBOSE_LAYOUT=1")
-    print(f"{heading}  shots  made    q>=0.9  runs ended there")
+    print(f"{heading:>6}  shots  made    q>=0.9  runs ended there")
     for n in sorted(shots, reverse=True):
         count, made, easy = shots[n]
         print(f"{n:6d}  {count:5d}  {made / count:6.1%}  {easy / count:6.1%}  {ended[n]:5d}")
@@ -106,7 +106,7 @@ def main(argv):
     elif len(argv) >= 2 and argv[0] == "needed":
         by_balls(argv[1:], needed, "needed")
     elif len(argv) >= 2 and argv[0] == "left":
-        by_balls(argv[1:], balls_left, "  left")
+        by_balls(argv[1:], balls_left, "left")
     else:
         sys.exit(__doc__)
 
