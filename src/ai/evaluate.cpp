@@ -85,7 +85,7 @@ Trial Evaluator::play(const Candidate& c, const physics::Stroke& stroke, bool as
     const bool lost = v.game_over && v.winner != me;
     const bool stays =
         !v.game_over && ((v.choice && v.choice->by == me) || (!v.choice && v.next_shooter == me));
-    t.shallow = verdict_value(pos_, s, v, sigma_deg_);
+    t.shallow = verdict_value(pos_, s, v, sigma_deg_, stuck_cost_);
     t.value = t.shallow;
     if (with_leave && stays && !v.choice && v.state.positions.count(0) != 0) {
         if (std::optional<BestAim> b = best_aim(pos_, v.state, v.state.positions.at(0), sigma_deg_))

@@ -50,9 +50,10 @@ struct Score {
 class Evaluator {
   public:
     /// `scale`: the execution noise the shooter plans for; `sigma_deg`: the heading σ of the
-    /// shot model used to value the positions left.
-    Evaluator(const Position& pos, double scale, double sigma_deg)
-        : pos_(pos), scale_(scale), sigma_deg_(sigma_deg) {}
+    /// shot model used to value the positions left; `stuck_cost`: what each stuck ball of the
+    /// player at the table takes off its value (table_value.hpp's `position_value`).
+    Evaluator(const Position& pos, double scale, double sigma_deg, double stuck_cost = 0.0)
+        : pos_(pos), scale_(scale), sigma_deg_(sigma_deg), stuck_cost_(stuck_cost) {}
 
     /// Plays the candidate without noise; a kick gets its call from what it pockets. With
     /// `with_leave`, the trial's `leave` is found too.
@@ -72,6 +73,7 @@ class Evaluator {
     const Position& pos_;
     double scale_;
     double sigma_deg_;
+    double stuck_cost_;
 };
 
 /// Scores each candidate of `which` in `candidates` with the draws [first, first + count),

@@ -26,10 +26,31 @@ Effort effort_for_level(int level) {
         {.noise_multiplier = 1.0, .pot_pairs = 14, .speeds = 7, .spins = 9, .safety_speeds = 4,
          .safety_contacts = 7, .sweep_headings = 720, .shortlist = 48, .samples = 40, .finalists = 8,
          .placements = 6, .break_samples = 12, .polish = 4, .deep_finalists = 8, .deep_samples = 16,
-         .next_pairs = 3, .next_speeds = 4, .next_spins = 4, .distinct_leaves = 0.5},
+         .next_pairs = 3, .next_speeds = 4, .next_spins = 4, .distinct_leaves = 0.5,
+         .stuck_ball_cost = 0.04},
     }};
     // clang-format on
     return levels[static_cast<std::size_t>(std::clamp(level, min_level, max_level) - 1)];
+}
+
+Effort rack_end_effort(int level) {
+    Effort effort = effort_for_level(level);
+    if (level >= max_level) {
+        effort.shortlist = 96;
+        effort.finalists = 12;
+        effort.polish = 6;
+        effort.deep_finalists = 12;
+        effort.deep_samples = 32;
+    }
+    return effort;
+}
+
+Effort for_game(Effort effort, rules::Game game) {
+    if (game != rules::Game::eight_ball) {
+        effort.distinct_leaves = 0.0;
+        effort.stuck_ball_cost = 0.0;
+    }
+    return effort;
 }
 
 }  // namespace ai

@@ -3,6 +3,8 @@
 // largest search that fits about a second per decision on two cores). docs/ai.md.
 #pragma once
 
+#include "rules/game_state.hpp"
+
 namespace ai {
 
 inline constexpr int min_level = 1;
@@ -35,9 +37,23 @@ struct Effort {
     /// played without noise; selection.hpp), so that strokes leaving another ball than the
     /// easiest reach the second ply too.
     double distinct_leaves = 0.0;
+    /// 8-ball: what each ball that the player at the table must still pocket, but that has no
+    /// clear path to any pocket from where it lies, takes off the value of his table
+    /// (table_value.hpp's `stuck_balls`) (unit: chance of winning).
+    double stuck_ball_cost = 0.0;
 };
 
 /// The effort of `level` (clamped to 1–5).
 Effort effort_for_level(int level);
+
+/// The effort of `level` near the end of an 8-ball rack (table_value.hpp's `near_rack_end`; the
+/// planner uses it in 8-ball only): level 5 searches wider there (twice the shortlist, half as
+/// many finalists and polished pots again, 12 deep finalists of 32 draws), where the shooter's
+/// last few balls decide the rack and a decision has fewer candidates; other levels as elsewhere.
+Effort rack_end_effort(int level);
+
+/// `effort` for a game of `game`: the 8-ball-only parts (distinct leaves, the stuck-ball cost)
+/// set to 0 in 9-ball, where the next ball is always the lowest.
+Effort for_game(Effort effort, rules::Game game);
 
 }  // namespace ai

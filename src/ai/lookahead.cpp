@@ -13,7 +13,7 @@ double next_turn_value(const Position& base, const rules::GameState& s, const Ef
                        double scale, double sigma_deg, std::int64_t& simulations) {
     auto cue = s.positions.find(0);
     if (cue_in_hand(s) || cue == s.positions.end())
-        return table_value(best_shot_chance(base, s, sigma_deg));
+        return position_value(base, s, sigma_deg, effort.stuck_ball_cost);
     const Position next{base.ruleset, base.table, base.params, s, std::nullopt};
     Effort second = effort;
     second.pot_pairs = effort.next_pairs;
@@ -23,8 +23,11 @@ double next_turn_value(const Position& base, const rules::GameState& s, const Ef
     std::vector<RankedAim> aims = ranked_aims(next, cue->second, sigma_deg);
     if (aims.size() > static_cast<std::size_t>(second.pot_pairs))
         aims.resize(static_cast<std::size_t>(second.pot_pairs));
-    const Evaluator eval(next, scale, sigma_deg);
-    double best = table_value(0.0);  // nothing on: a safety keeps the game about even
+    const Evaluator eval(next, scale, sigma_deg, effort.stuck_ball_cost);
+    // Nothing on: a safety keeps the game about even (less what his stuck balls cost him).
+    double best = table_value(0.0);
+    if (effort.stuck_ball_cost != 0.0)
+        best -= effort.stuck_ball_cost * static_cast<double>(stuck_balls(base, s));
     for (const RankedAim& r : aims) {
         // No stroke of this pot, nor of the less likely ones after it, can beat `best`: a
         // stroke is worth at most chance × 1 + (1 − chance) × the miss (the result is the same).

@@ -36,19 +36,12 @@ double normalized(double heading_deg) {
     return h;
 }
 
-// The share of each round of choose_under_noise kept for distinct leaves (selection.hpp): only
-// where the shooter chooses the order of his balls (8-ball); in 9-ball the next ball is always
-// the lowest, and the scores already rank the position on it.
-double leave_share(const Search& s) {
-    return s.pos.ruleset.game == rules::Game::eight_ball ? s.effort.distinct_leaves : 0.0;
-}
-
 // Noiseless play of candidates [from, end): their nominal scores (with their leaves where the
 // search keeps places for distinct ones).
 void score_nominal(Search& s, std::vector<Candidate>& cands, std::vector<Score>& nominal,
                    std::size_t from) {
     nominal.resize(cands.size());
-    const bool with_leave = leave_share(s) > 0.0;
+    const bool with_leave = s.effort.distinct_leaves > 0.0;
     parallel_for(cands.size() - from, s.workers, [&](std::size_t k) {
         const std::size_t i = from + k;
         const Trial t = s.eval.nominal(cands[i], with_leave);
@@ -73,7 +66,9 @@ std::vector<std::size_t> all_indices(std::size_t n) {
 std::size_t choose_under_noise(Search& s, std::vector<Candidate>& cands,
                                std::vector<Score>& nominal, std::vector<Score>& noisy,
                                std::size_t shortlist, bool deeper) {
-    const double share = deeper ? leave_share(s) : 0.0;
+    // The share of each round kept for distinct leaves (selection.hpp): 8-ball only (for_game in
+    // level.hpp), where the shooter chooses the order of his balls.
+    const double share = deeper ? s.effort.distinct_leaves : 0.0;
     std::vector<std::size_t> list =
         distinct_best_of(nominal, nominal, all_indices(cands.size()), shortlist, share);
     noisy.assign(cands.size(), Score{});
@@ -121,12 +116,12 @@ game::Decision decision_of(const Candidate& c) {
     return d;
 }
 
-Plan plan_choice(const Position& pos, double sigma_deg) {
+Plan plan_choice(const Position& pos, double sigma_deg, double stuck_cost) {
     Plan p;
     const rules::Choice& c = *pos.choice;
     double best = -1.0;
     for (rules::ChoiceOption o : c.options) {
-        const double v = option_value(pos, pos.state, o, c.by, sigma_deg);
+        const double v = option_value(pos, pos.state, o, c.by, sigma_deg, stuck_cost);
         if (v > best) {
             best = v;
             p.decision.choice = o;
@@ -135,6 +130,14 @@ Plan plan_choice(const Position& pos, double sigma_deg) {
     p.expected_success = best;
     p.expected_value = best;
     return p;
+}
+
+// The level's effort for `pos`: level 5 searches wider near the end of an 8-ball rack
+// (rack_end_effort; in 9-ball the wider search was not shown to help: docs/ai.md, stop 17).
+Effort effort_for(const Position& pos, int level) {
+    const bool rack_end =
+        pos.ruleset.game == rules::Game::eight_ball && near_rack_end(pos.ruleset, pos.state);
+    return for_game(rack_end ? rack_end_effort(level) : effort_for_level(level), pos.ruleset.game);
 }
 
 Plan plan_break(Search& s) {
@@ -161,12 +164,12 @@ double planned_scale(const PlanSettings& settings) {
 }
 
 Plan plan(const Position& pos, const PlanSettings& settings, std::uint64_t seed) {
-    const Effort effort = effort_for_level(settings.level);
+    const Effort effort = effort_for(pos, settings.level);
     const double scale = planned_scale(settings);
     const double sigma_deg = heading_sigma_deg * scale;
-    if (pos.choice) return plan_choice(pos, sigma_deg);
+    if (pos.choice) return plan_choice(pos, sigma_deg, effort.stuck_ball_cost);
 
-    Search s{pos, effort, Evaluator(pos, scale, sigma_deg),
+    Search s{pos, effort, Evaluator(pos, scale, sigma_deg, effort.stuck_ball_cost),
              noise_draws(seed, 2 * std::max(effort.samples, effort.break_samples)),
              std::max(settings.workers, 1)};
     if (pos.state.shot == rules::Shot::break_shot) return plan_break(s);

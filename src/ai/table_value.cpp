@@ -76,8 +76,43 @@ double best_shot_chance(const Position& base, const rules::GameState& s, double 
     return b ? b->chance : 0.0;
 }
 
+std::vector<int> balls_to_clear(const rules::Ruleset& rules, const rules::GameState& s) {
+    if (rules.game == rules::Game::nine_ball) return {s.on_table.begin(), s.on_table.end()};
+    std::vector<int> out;
+    if (!s.group_a) return out;
+    const rules::Group mine =
+        s.shooter == rules::Player::A ? *s.group_a : rules::other(*s.group_a);
+    for (int ball : s.on_table)
+        if (ball == 8 || rules::group_of(ball) == mine) out.push_back(ball);
+    return out;
+}
+
+bool near_rack_end(const rules::Ruleset& rules, const rules::GameState& s) {
+    if (rules.game == rules::Game::nine_ball) return s.on_table.size() <= 4;
+    return s.group_a && balls_to_clear(rules, s).size() <= 3;
+}
+
+int stuck_balls(const Position& base, const rules::GameState& s) {
+    const double R = base.params.ball_radius;
+    int stuck = 0;
+    for (int ball : balls_to_clear(base.ruleset, s)) {
+        bool open = false;
+        for (int pocket = 0; pocket < 6 && !open; ++pocket)
+            open = object_path(base.table, R, ball, pocket, s.positions).has_value();
+        if (!open) ++stuck;
+    }
+    return stuck;
+}
+
+double position_value(const Position& base, const rules::GameState& s, double sigma_deg,
+                      double stuck_cost) {
+    const double value = table_value(best_shot_chance(base, s, sigma_deg));
+    if (stuck_cost == 0.0) return value;
+    return value - stuck_cost * static_cast<double>(stuck_balls(base, s));
+}
+
 double option_value(const Position& base, const rules::GameState& first, rules::ChoiceOption option,
-                    rules::Player chooser, double sigma_deg) {
+                    rules::Player chooser, double sigma_deg, double stuck_cost) {
     using rules::ChoiceOption;
     constexpr double breaking = 0.55;  // the breaker's edge
     rules::GameState s = first;
@@ -103,21 +138,22 @@ double option_value(const Position& base, const rules::GameState& first, rules::
         case ChoiceOption::spot_8_with_kitchen_ball_in_hand:
             break;
     }
-    const double v = table_value(best_shot_chance(base, s, sigma_deg));
+    const double v = position_value(base, s, sigma_deg, stuck_cost);
     return s.shooter == chooser ? v : 1.0 - v;
 }
 
 double verdict_value(const Position& base, const rules::GameState& before, const rules::Verdict& v,
-                     double sigma_deg) {
+                     double sigma_deg, double stuck_cost) {
     const rules::Player me = before.shooter;
     if (v.game_over) return v.winner == me ? 1.0 : 0.0;
     if (v.choice) {
         double best = 0.0;
         for (rules::ChoiceOption o : v.choice->options)
-            best = std::max(best, option_value(base, v.state, o, v.choice->by, sigma_deg));
+            best = std::max(best,
+                            option_value(base, v.state, o, v.choice->by, sigma_deg, stuck_cost));
         return v.choice->by == me ? best : 1.0 - best;
     }
-    const double value = table_value(best_shot_chance(base, v.state, sigma_deg));
+    const double value = position_value(base, v.state, sigma_deg, stuck_cost);
     if (v.next_shooter != me) return 1.0 - value;
     return staying_value(before, v.state, value);
 }

@@ -22,7 +22,8 @@ constexpr double sigma = 0.21;  // heading σ of the shot model at 1× (ai::head
 
 double value_of(const ai::Position& pos) {
     std::int64_t sims = 0;
-    return ai::next_turn_value(pos, pos.state, ai::effort_for_level(5), 1.0, sigma, sims);
+    const ai::Effort effort = ai::for_game(ai::effort_for_level(5), pos.ruleset.game);
+    return ai::next_turn_value(pos, pos.state, effort, 1.0, sigma, sims);
 }
 
 // The 9 `d` metres from the NE corner's mouth on its axis, the cue ball 0.3 m behind it.

@@ -1,0 +1,69 @@
+// The end of a rack (table_value.hpp's near_rack_end, level.hpp's rack_end_effort): where the
+// shooter's last few balls are left, level 5 searches wider; elsewhere, and at lower levels, the
+// effort is the level's own.
+#include <gtest/gtest.h>
+
+#include "ai/level.hpp"
+#include "ai/table_value.hpp"
+#include "ai_support.hpp"
+
+namespace {
+
+using ai_test::position;
+using physics::Vec2;
+using rules::Game;
+
+// Balls `on` spread along the long cushion at y = 0.2 m, the cue ball at the table's centre.
+ai::Position spread(Game game, const std::set<int>& on) {
+    std::map<int, Vec2> at{{0, {1.27, 0.635}}};
+    double x = 0.2;
+    for (int ball : on) {
+        at[ball] = {x, 0.2};
+        x += 0.15;
+    }
+    return position(game, on, at);
+}
+
+TEST(NearRackEnd, EightBallCountsTheShootersGroupAndTheEight) {
+    ai::Position pos = spread(Game::eight_ball, {1, 2, 3, 4, 8, 9, 10});
+    EXPECT_FALSE(ai::near_rack_end(pos.ruleset, pos.state));  // an open table
+    pos.state.group_a = rules::Group::stripes;                 // A: the 9, the 10 and the 8
+    EXPECT_TRUE(ai::near_rack_end(pos.ruleset, pos.state));
+    pos.state.shooter = rules::Player::B;  // B: four solids and the 8
+    EXPECT_FALSE(ai::near_rack_end(pos.ruleset, pos.state));
+    pos.state.on_table = {3, 4, 8, 9, 10};  // B: two solids and the 8
+    EXPECT_TRUE(ai::near_rack_end(pos.ruleset, pos.state));
+}
+
+TEST(NearRackEnd, NineBallCountsEveryBallOnTheTable) {
+    ai::Position pos = spread(Game::nine_ball, {5, 6, 7, 8, 9});
+    EXPECT_FALSE(ai::near_rack_end(pos.ruleset, pos.state));
+    pos.state.on_table.erase(5);
+    EXPECT_TRUE(ai::near_rack_end(pos.ruleset, pos.state));
+}
+
+TEST(RackEndEffort, OnlyLevelFiveSearchesWiderAndOnlyInTheSearchAfterTheGrid) {
+    for (int level = ai::min_level; level < ai::max_level; ++level) {
+        const ai::Effort usual = ai::effort_for_level(level);
+        const ai::Effort end = ai::rack_end_effort(level);
+        EXPECT_EQ(end.shortlist, usual.shortlist) << "level " << level;
+        EXPECT_EQ(end.deep_samples, usual.deep_samples) << "level " << level;
+    }
+    const ai::Effort usual = ai::effort_for_level(ai::max_level);
+    const ai::Effort end = ai::rack_end_effort(ai::max_level);
+    EXPECT_GT(end.shortlist, usual.shortlist);
+    EXPECT_GT(end.finalists, usual.finalists);
+    EXPECT_GT(end.polish, usual.polish);
+    EXPECT_GT(end.deep_finalists, usual.deep_finalists);
+    EXPECT_GT(end.deep_samples, usual.deep_samples);
+    // The candidates, their draws and the second ply are the usual ones.
+    EXPECT_EQ(end.pot_pairs, usual.pot_pairs);
+    EXPECT_EQ(end.speeds, usual.speeds);
+    EXPECT_EQ(end.spins, usual.spins);
+    EXPECT_EQ(end.samples, usual.samples);
+    EXPECT_EQ(end.next_pairs, usual.next_pairs);
+    // Each deep draw is one of the search's draws (planner.cpp draws 2 × samples of them).
+    EXPECT_LE(end.deep_samples, 2 * end.samples);
+}
+
+}  // namespace
