@@ -79,11 +79,10 @@ double best_shot_chance(const Position& base, const rules::GameState& s, double 
 std::vector<int> balls_to_clear(const rules::Ruleset& rules, const rules::GameState& s) {
     if (rules.game == rules::Game::nine_ball) return {s.on_table.begin(), s.on_table.end()};
     std::vector<int> out;
-    if (!s.group_a) return out;
-    const rules::Group mine =
-        s.shooter == rules::Player::A ? *s.group_a : rules::other(*s.group_a);
+    const std::optional<rules::Group> mine = s.group(s.shooter);
+    if (!mine) return out;
     for (int ball : s.on_table)
-        if (ball == 8 || rules::group_of(ball) == mine) out.push_back(ball);
+        if (ball == 8 || rules::group_of(ball) == *mine) out.push_back(ball);
     return out;
 }
 
