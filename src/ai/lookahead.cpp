@@ -25,9 +25,7 @@ double next_turn_value(const Position& base, const rules::GameState& s, const Ef
         aims.resize(static_cast<std::size_t>(second.pot_pairs));
     const Evaluator eval(next, scale, sigma_deg, effort.stuck_ball_cost);
     // Nothing on: a safety keeps the game about even (less what his stuck balls cost him).
-    double best = table_value(0.0);
-    if (effort.stuck_ball_cost != 0.0)
-        best -= effort.stuck_ball_cost * static_cast<double>(stuck_balls(base, s));
+    double best = table_value(0.0) - stuck_penalty(base, s, effort.stuck_ball_cost);
     for (const RankedAim& r : aims) {
         // No stroke of this pot, nor of the less likely ones after it, can beat `best`: a
         // stroke is worth at most chance × 1 + (1 − chance) × the miss (the result is the same).

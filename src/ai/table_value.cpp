@@ -103,11 +103,14 @@ int stuck_balls(const Position& base, const rules::GameState& s) {
     return stuck;
 }
 
+double stuck_penalty(const Position& base, const rules::GameState& s, double stuck_cost) {
+    if (stuck_cost == 0.0) return 0.0;
+    return stuck_cost * static_cast<double>(stuck_balls(base, s));
+}
+
 double position_value(const Position& base, const rules::GameState& s, double sigma_deg,
                       double stuck_cost) {
-    const double value = table_value(best_shot_chance(base, s, sigma_deg));
-    if (stuck_cost == 0.0) return value;
-    return value - stuck_cost * static_cast<double>(stuck_balls(base, s));
+    return table_value(best_shot_chance(base, s, sigma_deg)) - stuck_penalty(base, s, stuck_cost);
 }
 
 double option_value(const Position& base, const rules::GameState& first, rules::ChoiceOption option,

@@ -43,8 +43,12 @@ bool near_rack_end(const rules::Ruleset& rules, const rules::GameState& s);
 /// ball in the way, or a cluster): he will have to free them before he can pot them.
 int stuck_balls(const Position& base, const rules::GameState& s);
 
-/// The value of the table to the shooter of `s`: T(his best shot's chance) less `stuck_cost` per
-/// stuck ball of his (none counted when `stuck_cost` is 0).
+/// What his stuck balls take off the value of the table to the shooter of `s`: `stuck_cost` per
+/// stuck ball (0, and none counted, when `stuck_cost` is 0).
+double stuck_penalty(const Position& base, const rules::GameState& s, double stuck_cost);
+
+/// The value of the table to the shooter of `s`: T(his best shot's chance) less his
+/// `stuck_penalty`.
 double position_value(const Position& base, const rules::GameState& s, double sigma_deg,
                       double stuck_cost);
 
