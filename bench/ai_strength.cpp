@@ -93,7 +93,11 @@ void print_shot(const ai::Position& pos, const ai::Plan& plan, const rules::Game
     std::fprintf(stderr, "in_hand_q %.2f ",
                  ai::best_shot_chance(pos, anywhere, ai::heading_sigma_deg));
     if (std::getenv("AI_VERBOSE_LAYOUT")) {
-        std::fprintf(stderr, "layout");
+        std::fprintf(stderr, "anywhere");
+        for (int ball : pos.state.on_table)
+            std::fprintf(stderr, " %d:%.3f", ball,
+                         ai::ball_chance_anywhere(pos, anywhere, ball, ai::heading_sigma_deg));
+        std::fprintf(stderr, " layout");
         for (const auto& [id, p] : pos.state.positions)
             std::fprintf(stderr, " %d:%.4f,%.4f", id, p.x, p.y);
         std::fprintf(stderr, " group_a %d ",

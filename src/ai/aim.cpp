@@ -11,27 +11,50 @@ namespace ai {
 
 namespace {
 
-// The object ball's direction error just after the first contact (unit: rad; + is
-// counter-clockwise of the wanted direction); empty when the cue ball does not hit it first.
+// The direction error of ball `watched` just after it is first struck (unit: rad; + is
+// counter-clockwise of `wanted`); empty when a cushion comes first or it is never struck.
+template <std::size_t N>
 std::optional<double> direction_error(const physics::Table& table, const physics::Params& params,
-                                      physics::Vec2 cue, physics::Vec2 object, const Aim& aim,
-                                      const physics::Stroke& stroke) {
-    std::array<physics::BallState, 2> balls{};
-    balls[0].pos = cue;
-    balls[1].id = aim.ball;
-    balls[1].pos = object;
+                                      const std::array<physics::BallState, N>& balls, int watched,
+                                      physics::Vec2 wanted, const physics::Stroke& stroke,
+                                      int max_events) {
     physics::SimOptions options;
-    options.max_events = 10;  // the contact comes within the first few events
+    options.max_events = max_events;  // the contact comes within the first few events
     const physics::Shot shot = physics::simulate(table, params, balls, &stroke, options);
     for (const physics::Event& e : shot.events()) {
         if (e.type == physics::EventType::cushion) return std::nullopt;
         if (e.type != physics::EventType::ball_ball) continue;
-        const physics::EventBall& b = e.balls[0].id == aim.ball ? e.balls[0] : e.balls[1];
+        if (e.balls[0].id != watched && e.balls[1].id != watched) continue;
+        const physics::EventBall& b = e.balls[0].id == watched ? e.balls[0] : e.balls[1];
         const physics::Vec2 v = b.vel;
         if (physics::norm2(v) == 0.0) return std::nullopt;
-        return std::atan2(physics::cross(aim.object_dir, v), physics::dot(aim.object_dir, v));
+        return std::atan2(physics::cross(wanted, v), physics::dot(wanted, v));
     }
     return std::nullopt;
+}
+
+// The secant method on the heading: `error(h)` is the watched ball's direction error for the
+// heading h, and turning the stroke by dh turns that ball by about −gain·dh.
+template <typename Error>
+double secant_heading(double start_deg, double gain, int iterations, std::int64_t& simulations,
+                      Error error) {
+    double h0 = start_deg;
+    ++simulations;
+    std::optional<double> e0 = error(h0);
+    if (!e0) return start_deg;
+    double h1 = h0 + *e0 / gain / deg;
+    for (int k = 0; k < iterations; ++k) {
+        ++simulations;
+        std::optional<double> e1 = error(h1);
+        if (!e1) return h0;
+        if (std::fabs(*e1) < 1e-6 || *e1 == *e0) return h1;
+        const double h2 = h1 - *e1 * (h1 - h0) / (*e1 - *e0);
+        h0 = h1;
+        e0 = e1;
+        // Never wander far from the ghost-ball heading: the shot model would not hold.
+        h1 = std::clamp(h2, start_deg - 3.0, start_deg + 3.0);
+    }
+    return h1;
 }
 
 }  // namespace
@@ -40,28 +63,38 @@ double refine_heading(const physics::Table& table, const physics::Params& params
                       physics::Vec2 cue, physics::Vec2 object, const Aim& aim,
                       physics::Stroke stroke, int iterations, std::int64_t& simulations) {
     const double R = params.ball_radius;
-    // Turning the stroke by dh turns the object ball by about −gain·dh.
     const double cos_cut = std::max(std::cos(aim.cut_deg * deg), 0.05);
     const double gain = aim.cue_distance / (2.0 * R * cos_cut);
-    double h0 = aim.heading_deg;
-    stroke.heading_deg = h0;
-    ++simulations;
-    std::optional<double> e0 = direction_error(table, params, cue, object, aim, stroke);
-    if (!e0) return aim.heading_deg;
-    double h1 = h0 + *e0 / gain / deg;
-    for (int k = 0; k < iterations; ++k) {
-        stroke.heading_deg = h1;
-        ++simulations;
-        std::optional<double> e1 = direction_error(table, params, cue, object, aim, stroke);
-        if (!e1) return h0;
-        if (std::fabs(*e1) < 1e-6 || *e1 == *e0) return h1;
-        const double h2 = h1 - *e1 * (h1 - h0) / (*e1 - *e0);
-        h0 = h1;
-        e0 = e1;
-        // Never wander far from the ghost-ball heading: the shot model would not hold.
-        h1 = std::clamp(h2, aim.heading_deg - 3.0, aim.heading_deg + 3.0);
-    }
-    return h1;
+    std::array<physics::BallState, 2> balls{};
+    balls[0].pos = cue;
+    balls[1].id = aim.ball;
+    balls[1].pos = object;
+    return secant_heading(aim.heading_deg, gain, iterations, simulations, [&](double h) {
+        stroke.heading_deg = h;
+        return direction_error(table, params, balls, aim.ball, aim.object_dir, stroke, 10);
+    });
+}
+
+double refine_combination_heading(const physics::Table& table, const physics::Params& params,
+                                  physics::Vec2 cue, const std::map<int, physics::Vec2>& balls,
+                                  const Combination& c, physics::Stroke stroke, int iterations,
+                                  std::int64_t& simulations) {
+    const double R = params.ball_radius;
+    const double cos_first = std::max(std::cos(c.first.cut_deg * deg), 0.05);
+    const double cos_second = std::max(std::cos(c.second.cut_deg * deg), 0.05);
+    const double gain = c.first.cue_distance / (2.0 * R * cos_first) *
+                        (c.first.object_distance / (2.0 * R * cos_second) + 1.0);
+    std::array<physics::BallState, 3> three{};
+    three[0].pos = cue;
+    three[1].id = c.first.ball;
+    three[1].pos = balls.at(c.first.ball);
+    three[2].id = c.second.ball;
+    three[2].pos = balls.at(c.second.ball);
+    return secant_heading(c.first.heading_deg, gain, iterations, simulations, [&](double h) {
+        stroke.heading_deg = h;
+        return direction_error(table, params, three, c.second.ball, c.second.object_dir, stroke,
+                               20);
+    });
 }
 
 }  // namespace ai

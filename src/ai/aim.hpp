@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 
 #include "ai/ghost_ball.hpp"
 #include "physics/params.hpp"
@@ -19,5 +20,12 @@ namespace ai {
 double refine_heading(const physics::Table& table, const physics::Params& params,
                       physics::Vec2 cue, physics::Vec2 object, const Aim& aim,
                       physics::Stroke stroke, int iterations, std::int64_t& simulations);
+
+/// The same for a combination (cue ball, `c.first` and `c.second` alone on the table, where
+/// `balls` has them): the heading that sends `c.second` along `c.second.object_dir`.
+double refine_combination_heading(const physics::Table& table, const physics::Params& params,
+                                  physics::Vec2 cue, const std::map<int, physics::Vec2>& balls,
+                                  const Combination& c, physics::Stroke stroke, int iterations,
+                                  std::int64_t& simulations);
 
 }  // namespace ai

@@ -50,6 +50,23 @@ double base_pot_speed(const physics::Params& params, const Aim& aim) {
     return physics::cue_speed_for_ball_speed(params, cue0);
 }
 
+// The cue speed for the combination `c`: the second ball gets to the pocket with
+// `arrival_speed`, each ball losing to the slide and the roll as in `base_pot_speed`.
+double base_combination_speed(const physics::Params& params, const Combination& c) {
+    const auto launch = [](double arrival, double distance) {
+        return 1.4 * std::sqrt(arrival * arrival + 2.0 * roll_decel * distance);
+    };
+    const auto struck = [](double leaving, double cut_deg) {
+        return leaving / (0.975 * std::max(std::cos(cut_deg * deg), 0.2));
+    };
+    const double second0 = launch(arrival_speed, c.second.object_distance);
+    const double first0 = launch(struck(second0, c.second.cut_deg), c.first.object_distance);
+    const double cue_at_contact = struck(first0, c.first.cut_deg);
+    const double cue0 =
+        1.2 * std::sqrt(cue_at_contact * cue_at_contact + 2.0 * roll_decel * c.first.cue_distance);
+    return physics::cue_speed_for_ball_speed(params, cue0);
+}
+
 double heading_to(Vec2 from, Vec2 to) {
     return std::atan2(to.y - from.y, to.x - from.x) / deg;
 }
@@ -126,6 +143,54 @@ std::vector<Candidate> pot_candidates(const Position& pos, Vec2 cue, bool in_han
     return out;
 }
 
+std::vector<RankedCombination> ranked_combinations(const Position& pos, Vec2 cue,
+                                                   double sigma_deg) {
+    std::vector<RankedCombination> out;
+    if (pos.ruleset.game != rules::Game::nine_ball) return out;
+    const std::vector<int> lowest = target_balls(pos.ruleset, pos.state);
+    if (lowest.size() != 1 || lowest.front() == 9 || !pos.state.on_table.count(9)) return out;
+    const double R = pos.params.ball_radius;
+    for (int pocket = 0; pocket < 6; ++pocket)
+        if (std::optional<Combination> c = combination_aim(pos.table, R, cue, lowest.front(), 9,
+                                                           pocket, pos.state.positions))
+            out.push_back({*c, combination_chance(*c, R, sigma_deg)});
+    std::stable_sort(out.begin(), out.end(), [](const RankedCombination& a,
+                                                const RankedCombination& b) {
+        return a.chance > b.chance;
+    });
+    return out;
+}
+
+std::vector<Candidate> combination_candidates(const Position& pos, Vec2 cue, bool in_hand,
+                                              const Effort& effort, double sigma_deg,
+                                              std::int64_t& simulations) {
+    constexpr std::array<double, 3> speed_factors{1.3, 2.1, 3.2};
+    std::vector<Candidate> out;
+    if (effort.combinations <= 0) return out;
+    std::vector<RankedCombination> combos = ranked_combinations(pos, cue, sigma_deg);
+    if (combos.size() > static_cast<std::size_t>(effort.combinations))
+        combos.resize(static_cast<std::size_t>(effort.combinations));
+    for (const RankedCombination& r : combos) {
+        const double base = base_combination_speed(pos.params, r.combination);
+        for (double factor : speed_factors)
+            for (std::size_t j = 0; j < 3; ++j) {  // stun, follow, draw
+                Candidate c;
+                c.kind = Kind::pot;
+                c.prior = r.chance;  // no `aim`: a combination is not searched around finer
+                c.cue_pos = spot(in_hand, cue);
+                c.call = pot_call(pos, 9, r.combination.second.pocket);
+                c.stroke.speed = std::clamp(base * factor, min_speed, max_speed);
+                c.stroke.side = spins[j].side;
+                c.stroke.top = spins[j].top;
+                c.stroke.heading_deg =
+                    refine_combination_heading(pos.table, pos.params, cue, pos.state.positions,
+                                               r.combination, c.stroke, 2, simulations);
+                out.push_back(c);
+            }
+    }
+    return out;
+}
+
 std::vector<Candidate> pot_variants(const Position& pos, const Candidate& c,
                                     std::int64_t& simulations) {
     struct Change {
@@ -197,7 +262,7 @@ std::vector<Candidate> kick_candidates(const Position& pos, Vec2 cue, bool in_ha
     return out;
 }
 
-std::vector<Candidate> break_candidates(const Position& pos) {
+std::optional<Candidate> break_candidate(const Position& pos, const BreakSpec& spec) {
     const double R = pos.params.ball_radius;
     const double W = pos.table.width();
     // The apex ball: the object ball nearest the head cushion.
@@ -208,25 +273,34 @@ std::vector<Candidate> break_candidates(const Position& pos) {
             best_x = p.x;
             apex = p;
         }
+    const Vec2 cue{pos.ruleset.table.head_string_x() - 2.0 * R, W / 2.0 + spec.offset};
+    if (!free_spot(pos, cue)) return std::nullopt;
+    const double d = physics::norm(apex - cue);
+    Candidate c;
+    c.kind = Kind::break_shot;
+    c.cue_pos = cue;
+    c.stroke.speed = spec.speed;
+    c.stroke.top = -0.1;  // a touch of draw keeps the cue ball off the rails
+    const double sign = spec.offset >= 0.0 ? 1.0 : -1.0;
+    c.stroke.heading_deg =
+        heading_to(cue, apex) + sign * std::asin(spec.contact * 2.0 * R / d) / deg;
+    return c;
+}
+
+std::vector<BreakSpec> broad_breaks() {
+    std::vector<BreakSpec> out;
+    for (double offset : {0.0, 0.15, -0.15, 0.32, -0.32})
+        for (double contact : {0.0, 0.25})
+            for (double speed : {6.5, 8.0, 9.5}) out.push_back({offset, contact, speed});
+    return out;
+}
+
+std::vector<Candidate> break_candidates(const Position& pos, bool tuned) {
     std::vector<Candidate> out;
-    const double x = pos.ruleset.table.head_string_x() - 2.0 * R;
-    for (double dy : {0.0, 0.15, -0.15, 0.32, -0.32}) {
-        const Vec2 cue{x, W / 2.0 + dy};
-        if (!free_spot(pos, cue)) continue;
-        const double d = physics::norm(apex - cue);
-        for (double f : {0.0, 0.25})
-            for (double speed : {6.5, 8.0, 9.5}) {
-                Candidate c;
-                c.kind = Kind::break_shot;
-                c.cue_pos = cue;
-                c.stroke.speed = speed;
-                c.stroke.top = -0.1;  // a touch of draw keeps the cue ball off the rails
-                const double sign = dy >= 0.0 ? 1.0 : -1.0;
-                c.stroke.heading_deg =
-                    heading_to(cue, apex) + sign * std::asin(f * 2.0 * R / d) / deg;
-                out.push_back(c);
-            }
-    }
+    const std::vector<BreakSpec> specs =
+        tuned ? std::vector<BreakSpec>(tuned_breaks.begin(), tuned_breaks.end()) : broad_breaks();
+    for (const BreakSpec& spec : specs)
+        if (std::optional<Candidate> c = break_candidate(pos, spec)) out.push_back(*c);
     return out;
 }
 

@@ -1,13 +1,16 @@
 // The strokes the AI considers, before any is judged:
 //   pots      ghost-ball aims for every target ball and pocket, the easiest first, each at a few
 //             speeds and spins, the heading refined for throw and squirt (aim.hpp);
+//             9-ball: also combinations on the 9 (the lowest ball into it);
 //   safeties  contacts across each legal ball (full to thin) at a few speeds, called "safety";
 //   kicks     a sweep of headings all round (banks, kicks, combinations, escapes from a snooker);
 //             the call comes from what the stroke does when played without noise;
-//   breaks    from a few spots behind the head string, full on the apex ball, hard;
+//   breaks    from a few spots behind the head string, full on the apex ball, hard (level 5:
+//             `tuned_breaks`, tuned offline);
 //   push-outs (9-ball) soft rolls in every direction.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -56,6 +59,23 @@ std::vector<Candidate> pot_strokes(const Position& pos, physics::Vec2 cue, bool 
 std::vector<Candidate> pot_candidates(const Position& pos, physics::Vec2 cue, bool in_hand,
                                       const Effort& effort, double sigma_deg,
                                       std::int64_t& simulations);
+/// A combination and its analytic chance.
+struct RankedCombination {
+    Combination combination;
+    double chance = 0.0;
+};
+/// 9-ball: every combination on the 9 from the cue ball at `cue` (the lowest ball sent into the
+/// 9, the 9 into a pocket), the likeliest first; none in 8-ball or when the 9 is the lowest.
+std::vector<RankedCombination> ranked_combinations(const Position& pos, physics::Vec2 cue,
+                                                   double sigma_deg);
+
+/// The strokes of the `effort.combinations` likeliest combinations on the 9 from `cue`: a few
+/// speeds, stun, follow and draw, each heading refined with the three balls alone (aim.hpp).
+/// Adds the refinement simulations to `simulations`.
+std::vector<Candidate> combination_candidates(const Position& pos, physics::Vec2 cue, bool in_hand,
+                                              const Effort& effort, double sigma_deg,
+                                              std::int64_t& simulations);
+
 /// Pots close to the pot `c`: its speed a little lower and higher and its follow or draw a
 /// little more and less, each heading refined again (a finer search of the stroke around the
 /// best few; position play needs finer speeds than the first grid). Adds the refinement
@@ -67,7 +87,31 @@ std::vector<Candidate> safety_candidates(const Position& pos, physics::Vec2 cue,
                                          const Effort& effort);
 std::vector<Candidate> kick_candidates(const Position& pos, physics::Vec2 cue, bool in_hand,
                                        const Effort& effort);
-std::vector<Candidate> break_candidates(const Position& pos);
+/// A break: the cue ball just behind the head string, `offset` across the table from its middle
+/// (unit: m), sent at the apex ball full (`contact` 0) or off its centre towards the middle
+/// (`contact` × a ball's width), at cue speed `speed` (unit: m/s) with a touch of draw.
+struct BreakSpec {
+    double offset = 0.0;
+    double contact = 0.0;
+    double speed = 9.5;
+};
+/// The break of `spec` in `pos`; empty when its spot is taken.
+std::optional<Candidate> break_candidate(const Position& pos, const BreakSpec& spec);
+/// The breaks level 5 chooses among, tuned offline (`break_tuning`, docs/ai.md "Breaks"): full
+/// on the apex ball from the middle or a little off it, hard. Of the spots, contacts and speeds
+/// measured, these leave the fewest balls with no path to a pocket and pocket the most, with no
+/// more scratches than the others.
+inline constexpr std::array<BreakSpec, 6> tuned_breaks{{{0.0, 0.0, 9.5},
+                                                        {0.0, 0.0, 10.0},
+                                                        {0.08, 0.0, 9.5},
+                                                        {-0.08, 0.0, 9.5},
+                                                        {0.08, 0.0, 10.0},
+                                                        {-0.08, 0.0, 10.0}}};
+/// The broad set the lower levels choose among: five spots, full or a quarter of a ball off the
+/// apex ball's centre, at 6.5, 8 and 9.5 m/s.
+std::vector<BreakSpec> broad_breaks();
+/// The breaks tried in `pos`: the tuned ones (`tuned`) or the broad set, those whose spot is free.
+std::vector<Candidate> break_candidates(const Position& pos, bool tuned);
 std::vector<Candidate> push_out_candidates(const Position& pos, physics::Vec2 cue);
 
 }  // namespace ai

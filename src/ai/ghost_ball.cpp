@@ -98,6 +98,63 @@ std::optional<Aim> direct_aim(const physics::Table& table, double radius, Vec2 c
     return a;
 }
 
+std::optional<Combination> combination_path(const physics::Table& table, double radius, int first,
+                                            int second, int pocket,
+                                            const std::map<int, Vec2>& balls) {
+    constexpr double max_combination_cut_deg = 45.0;  // at the second ball
+    auto it = balls.find(first);
+    if (first == second || it == balls.end()) return std::nullopt;
+    std::optional<Aim> to_pocket = object_path(table, radius, second, pocket, balls);
+    if (!to_pocket) return std::nullopt;
+    const Vec2 start = it->second;
+    Aim f;
+    f.ball = first;
+    f.pocket = pocket;
+    f.aim_point = to_pocket->ghost;
+    f.object_distance = physics::norm(f.aim_point - start);
+    if (f.object_distance < 1e-6) return std::nullopt;
+    f.object_dir = unit(f.aim_point - start);
+    const double cos_second = std::clamp(physics::dot(f.object_dir, to_pocket->object_dir), -1.0, 1.0);
+    if (std::acos(cos_second) / deg > max_combination_cut_deg) return std::nullopt;
+    if (!path_clear(start, f.aim_point, balls, first, second, radius)) return std::nullopt;
+    // An error ε of the first ball's direction turns the second by about ε·(d / (2R cos φ) + 1).
+    const double gain = f.object_distance / (2.0 * radius * cos_second) + 1.0;
+    f.tolerance = to_pocket->tolerance / gain;
+    f.ghost = start - 2.0 * radius * f.object_dir;
+    if (!table.on_surface(f.ghost, radius * 0.999)) return std::nullopt;
+    for (const auto& [id, p] : balls)
+        if (id != first && physics::norm(p - f.ghost) < 2.0 * radius - clearance_slack)
+            return std::nullopt;
+    Aim s = *to_pocket;
+    s.cut_deg = std::acos(cos_second) / deg;
+    return Combination{f, s};
+}
+
+std::optional<Combination> combination_aim(const physics::Table& table, double radius, Vec2 cue,
+                                           int first, int second, int pocket,
+                                           const std::map<int, Vec2>& balls) {
+    constexpr double max_first_cut_deg = 70.0;  // at the first ball
+    std::optional<Combination> combination =
+        combination_path(table, radius, first, second, pocket, balls);
+    if (!combination) return std::nullopt;
+    Aim& f = combination->first;
+    const Vec2 to_ghost = f.ghost - cue;
+    f.cue_distance = physics::norm(to_ghost);
+    if (f.cue_distance < 1e-6) return std::nullopt;
+    const Vec2 c = (1.0 / f.cue_distance) * to_ghost;
+    f.cut_deg = std::acos(std::clamp(physics::dot(c, f.object_dir), -1.0, 1.0)) / deg;
+    if (f.cut_deg > max_first_cut_deg) return std::nullopt;
+    f.heading_deg = std::atan2(c.y, c.x) / deg;
+    if (!path_clear(cue, f.ghost, balls, first, 0, radius)) return std::nullopt;
+    return combination;
+}
+
+double combination_chance(const Combination& c, double radius, double sigma_deg) {
+    // The second contact throws the second ball by a little that no refinement corrects.
+    const double thin = 1.0 - 0.25 * std::pow(c.second.cut_deg / 45.0, 2.0);
+    return aim_chance(c.first, radius, sigma_deg) * thin;
+}
+
 double aim_chance(const Aim& a, double radius, double sigma_deg) {
     const double cos_cut = std::max(std::cos(a.cut_deg * deg), 0.1);
     const double gain = a.cue_distance / (2.0 * radius * cos_cut) + 1.0;

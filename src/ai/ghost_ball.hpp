@@ -54,4 +54,28 @@ std::optional<Aim> object_path(const physics::Table& table, double radius, int b
 /// The chance of potting `aim` with an execution heading σ of `sigma_deg`.
 double aim_chance(const Aim& aim, double radius, double sigma_deg);
 
+/// A combination: the cue ball sends `first` into `second`, which goes on into the pocket.
+struct Combination {
+    Aim first;   ///< cue ball → `first`, sent to where it meets `second` (`second.ghost`);
+                 ///< its tolerance is that of `second` seen back along `first`'s path
+    Aim second;  ///< `second` → pocket (its `object_path`)
+};
+
+/// The combination's object balls alone (for a ball in hand): `first` to where it meets
+/// `second`, `second` to the pocket; the cue ball's part of `first` not set yet.
+std::optional<Combination> combination_path(const physics::Table& table, double radius, int first,
+                                            int second, int pocket,
+                                            const std::map<int, physics::Vec2>& balls);
+
+/// The combination of `first` into `second` into `pocket` from the cue ball at `cue`; empty
+/// when a path is blocked, `first` would cut `second` by more than 45° or be cut by more than
+/// 70°, or a ghost ball is off the table or taken.
+std::optional<Combination> combination_aim(const physics::Table& table, double radius,
+                                           physics::Vec2 cue, int first, int second, int pocket,
+                                           const std::map<int, physics::Vec2>& balls);
+
+/// The chance of potting `second` by the combination `c` with a heading σ of `sigma_deg`: the
+/// heading error grows at each contact as in `aim_chance`.
+double combination_chance(const Combination& c, double radius, double sigma_deg);
+
 }  // namespace ai

@@ -41,6 +41,13 @@ struct Effort {
     /// clear path to any pocket from where it lies, takes off the value of his table
     /// (table_value.hpp's `stuck_balls`) (unit: chance of winning).
     double stuck_ball_cost = 0.0;
+    /// 9-ball: combinations on the 9 (the lowest ball sent into it, the 9 into a pocket) tried,
+    /// the likeliest first, each at a few speeds and spins (candidates.hpp), with ball in hand
+    /// from a spot found for them too (placement.hpp).
+    int combinations = 0;
+    /// Breaks among the few tuned offline (candidates.hpp's `tuned_breaks`) rather than the broad
+    /// set.
+    bool tuned_breaks = false;
 };
 
 /// The effort of `level` (clamped to 1–5).

@@ -16,4 +16,10 @@ namespace ai {
 /// balls for a safety, and at worst the first free spot of a scan of the table.
 std::vector<physics::Vec2> cue_spots(const Position& pos, int count, double sigma_deg);
 
+/// 9-ball: up to `count` free spots (anywhere on the table) from which a combination on the 9
+/// is likeliest (the lowest ball sent into the 9, ghost_ball.hpp's `combination_chance`), one
+/// per pocket, the best first; none worth less than `min_chance`.
+std::vector<physics::Vec2> combination_spots(const Position& pos, int count, double sigma_deg,
+                                             double min_chance);
+
 }  // namespace ai

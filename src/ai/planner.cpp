@@ -20,6 +20,7 @@ namespace {
 
 constexpr double good_enough = 0.5;  // below this nominal value, kicks and banks are tried too
 constexpr double miss_value = 0.4;   // a rough value of missing a pot, for the shortlist only
+constexpr double min_combination_chance = 0.3;  // ball in hand: a spot for a combination on the 9
 
 struct Search {
     const Position& pos;
@@ -141,7 +142,7 @@ Effort effort_for(const Position& pos, int level) {
 }
 
 Plan plan_break(Search& s) {
-    std::vector<Candidate> cands = break_candidates(s.pos);
+    std::vector<Candidate> cands = break_candidates(s.pos, s.effort.tuned_breaks);
     std::vector<Score> scores(cands.size());
     const std::size_t n =
         s.eval.scale() == 0.0 ? 1 : static_cast<std::size_t>(s.effort.break_samples);
@@ -186,9 +187,18 @@ Plan plan(const Position& pos, const PlanSettings& settings, std::uint64_t seed)
         std::vector<Candidate> pots =
             pot_candidates(pos, cue, in_hand, effort, sigma_deg, s.simulations);
         std::vector<Candidate> safe = safety_candidates(pos, cue, in_hand, effort);
+        std::vector<Candidate> combos =
+            combination_candidates(pos, cue, in_hand, effort, sigma_deg, s.simulations);
         cands.insert(cands.end(), pots.begin(), pots.end());
         cands.insert(cands.end(), safe.begin(), safe.end());
+        cands.insert(cands.end(), combos.begin(), combos.end());
     }
+    if (in_hand && effort.combinations > 0)  // spots of their own for combinations on the 9
+        for (physics::Vec2 cue : combination_spots(pos, 2, sigma_deg, min_combination_chance)) {
+            std::vector<Candidate> combos =
+                combination_candidates(pos, cue, true, effort, sigma_deg, s.simulations);
+            cands.insert(cands.end(), combos.begin(), combos.end());
+        }
     std::vector<Score> nominal;
     score_nominal(s, cands, nominal, 0);
     const auto legal_best = [&] {

@@ -12,31 +12,40 @@ namespace {
 constexpr std::array<double, 3> kitchen_x{0.35, 0.65, 0.92};
 constexpr std::array<double, 5> kitchen_y{0.12, 0.3, 0.5, 0.7, 0.88};
 
-// The best pot with the cue ball free to go anywhere: from just behind the ghost ball, straight
-// in or at a slight angle, wherever that spot is free.
-double best_in_hand_anywhere(const Position& base, const rules::GameState& s, double sigma_deg) {
+}  // namespace
+
+double ball_chance_anywhere(const Position& base, const rules::GameState& s, int ball,
+                            double sigma_deg) {
     const double R = base.params.ball_radius;
     double best = 0.0;
-    for (int ball : target_balls(base.ruleset, s))
-        for (int pocket = 0; pocket < 6; ++pocket) {
-            std::optional<Aim> path = object_path(base.table, R, ball, pocket, s.positions);
-            if (!path) continue;
-            for (double turn : {0.0, 0.35, -0.35}) {
-                const physics::Vec2 back{-path->object_dir.x, -path->object_dir.y};
-                const physics::Vec2 dir{back.x * std::cos(turn) - back.y * std::sin(turn),
-                                        back.x * std::sin(turn) + back.y * std::cos(turn)};
-                const physics::Vec2 cue = path->ghost + 0.3 * dir;
-                if (!base.table.on_surface(cue, R)) continue;
-                bool free = true;
-                for (const auto& [id, p] : s.positions)
-                    if (id != 0 && physics::norm(p - cue) < 2.0 * R + 1e-6) free = false;
-                if (!free) continue;
-                if (std::optional<Aim> a =
-                        direct_aim(base.table, R, cue, ball, pocket, s.positions))
-                    best = std::max(best, aim_chance(*a, R, sigma_deg));
-                break;
-            }
+    for (int pocket = 0; pocket < 6; ++pocket) {
+        std::optional<Aim> path = object_path(base.table, R, ball, pocket, s.positions);
+        if (!path) continue;
+        for (double turn : {0.0, 0.35, -0.35}) {
+            const physics::Vec2 back{-path->object_dir.x, -path->object_dir.y};
+            const physics::Vec2 dir{back.x * std::cos(turn) - back.y * std::sin(turn),
+                                    back.x * std::sin(turn) + back.y * std::cos(turn)};
+            const physics::Vec2 cue = path->ghost + 0.3 * dir;
+            if (!base.table.on_surface(cue, R)) continue;
+            bool free = true;
+            for (const auto& [id, p] : s.positions)
+                if (id != 0 && physics::norm(p - cue) < 2.0 * R + 1e-6) free = false;
+            if (!free) continue;
+            if (std::optional<Aim> a = direct_aim(base.table, R, cue, ball, pocket, s.positions))
+                best = std::max(best, aim_chance(*a, R, sigma_deg));
+            break;
         }
+    }
+    return best;
+}
+
+namespace {
+
+// The best pot with the cue ball free to go anywhere (`ball_chance_anywhere` of the best ball).
+double best_in_hand_anywhere(const Position& base, const rules::GameState& s, double sigma_deg) {
+    double best = 0.0;
+    for (int ball : target_balls(base.ruleset, s))
+        best = std::max(best, ball_chance_anywhere(base, s, ball, sigma_deg));
     return best;
 }
 

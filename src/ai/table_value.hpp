@@ -17,6 +17,12 @@ namespace ai {
 /// with ball in hand, from the best spot found for it. 0 when nothing is on.
 double best_shot_chance(const Position& base, const rules::GameState& s, double sigma_deg);
 
+/// The chance of the best direct pot of `ball` with the cue ball free to go anywhere (just behind
+/// its ghost ball, straight in or at a slight angle, wherever that spot is free); 0 when the
+/// ball has no clear path to any pocket.
+double ball_chance_anywhere(const Position& base, const rules::GameState& s, int ball,
+                            double sigma_deg);
+
 /// The best direct pot from the cue ball at `cue`, if any is on, and its chance.
 struct BestAim {
     Aim aim;
