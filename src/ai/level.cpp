@@ -49,6 +49,9 @@ Effort for_game(Effort effort, rules::Game game) {
     if (game != rules::Game::eight_ball) {
         effort.distinct_leaves = 0.0;
         effort.stuck_ball_cost = 0.0;
+    } else {
+        effort.combinations = 0;
+        effort.tuned_breaks = false;
     }
     return effort;
 }

@@ -45,8 +45,8 @@ struct Effort {
     /// the likeliest first, each at a few speeds and spins (candidates.hpp), with ball in hand
     /// from a spot found for them too (placement.hpp).
     int combinations = 0;
-    /// Breaks among the few tuned offline (candidates.hpp's `tuned_breaks`) rather than the broad
-    /// set.
+    /// 9-ball: breaks among the few tuned offline (candidates.hpp's `tuned_breaks`) rather than
+    /// the broad set (in 8-ball they scratched more and cleared no more racks: docs/ai.md).
     bool tuned_breaks = false;
 };
 
@@ -60,7 +60,8 @@ Effort effort_for_level(int level);
 Effort rack_end_effort(int level);
 
 /// `effort` for a game of `game`: the 8-ball-only parts (distinct leaves, the stuck-ball cost)
-/// set to 0 in 9-ball, where the next ball is always the lowest.
+/// set to 0 in 9-ball, where the next ball is always the lowest; the 9-ball-only parts
+/// (combinations on the 9, the tuned breaks) off in 8-ball.
 Effort for_game(Effort effort, rules::Game game);
 
 }  // namespace ai

@@ -1,6 +1,6 @@
 // The break (candidates.hpp's `tuned_breaks`, `broad_breaks`, `break_candidate`): from just
 // behind the head string, full on the apex ball, hard; level 5 breaks with one of the tuned
-// breaks, the levels below with one of the broad set.
+// breaks in 9-ball, the levels below (and 8-ball) with one of the broad set.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -100,15 +100,19 @@ bool breaks_with_one_of(const ai::Position& pos, int level, bool tuned) {
     return found;
 }
 
-TEST(Breaks, LevelFiveBreaksWithATunedBreakTheOthersWithTheBroadSet) {
-    const ai::Position pos = racked(Game::eight_ball, 9);
-    EXPECT_TRUE(breaks_with_one_of(pos, ai::max_level, true));
+TEST(Breaks, LevelFiveBreaksWithATunedBreakInNineBallTheOthersWithTheBroadSet) {
+    const ai::Position nine = racked(Game::nine_ball, 9);
+    EXPECT_TRUE(breaks_with_one_of(nine, ai::max_level, true));
     EXPECT_TRUE(ai::effort_for_level(ai::max_level).tuned_breaks);
     for (int level = ai::min_level; level < ai::max_level; ++level) {
         EXPECT_FALSE(ai::effort_for_level(level).tuned_breaks) << "level " << level;
-        EXPECT_TRUE(breaks_with_one_of(pos, level, false)) << "level " << level;
+        EXPECT_TRUE(breaks_with_one_of(nine, level, false)) << "level " << level;
     }
-    EXPECT_EQ(ai::break_candidates(pos, false).size(), ai::broad_breaks().size());
+    // 8-ball: the broad set at every level.
+    const ai::Position eight = racked(Game::eight_ball, 9);
+    EXPECT_FALSE(ai::for_game(ai::effort_for_level(ai::max_level), Game::eight_ball).tuned_breaks);
+    EXPECT_TRUE(breaks_with_one_of(eight, ai::max_level, false));
+    EXPECT_EQ(ai::break_candidates(eight, false).size(), ai::broad_breaks().size());
 }
 
 }  // namespace

@@ -100,7 +100,8 @@ TEST(CombinationCandidates, NoneInEightBallOrWhenTheNineIsTheLowest) {
     EXPECT_TRUE(ai::ranked_combinations(eight, {0.95, 0.95}, ai::heading_sigma_deg).empty());
     ai::Position nine = position(Game::nine_ball, {9}, {{0, {0.95, 0.95}}, {9, {0.25, 0.25}}});
     EXPECT_TRUE(ai::ranked_combinations(nine, {0.95, 0.95}, ai::heading_sigma_deg).empty());
-    // Levels below 5 try none.
+    // Levels below 5 try none, nor level 5 in 8-ball.
+    EXPECT_EQ(ai::for_game(ai::effort_for_level(ai::max_level), Game::eight_ball).combinations, 0);
     std::int64_t sims = 0;
     const ai::Position pos = straight_combination();
     EXPECT_TRUE(ai::combination_candidates(pos, {0.95, 0.95}, false, ai::effort_for_level(4),
