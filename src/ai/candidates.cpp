@@ -178,7 +178,7 @@ std::vector<Candidate> combination_candidates(const Position& pos, Vec2 cue, boo
                 c.kind = Kind::pot;
                 c.prior = r.chance;  // no `aim`: a combination is not searched around finer
                 c.cue_pos = spot(in_hand, cue);
-                c.call = pot_call(pos, 9, r.combination.second.pocket);
+                c.call = pot_call(pos, r.combination.second.ball, r.combination.second.pocket);
                 c.stroke.speed = std::clamp(base * factor, min_speed, max_speed);
                 c.stroke.side = spins[j].side;
                 c.stroke.top = spins[j].top;
