@@ -146,13 +146,12 @@ std::vector<Candidate> pot_candidates(const Position& pos, Vec2 cue, bool in_han
 std::vector<RankedCombination> ranked_combinations(const Position& pos, Vec2 cue,
                                                    double sigma_deg) {
     std::vector<RankedCombination> out;
-    if (pos.ruleset.game != rules::Game::nine_ball) return out;
-    const std::vector<int> lowest = target_balls(pos.ruleset, pos.state);
-    if (lowest.size() != 1 || lowest.front() == 9 || !pos.state.on_table.count(9)) return out;
+    const std::optional<int> first = combination_first_ball(pos.ruleset, pos.state);
+    if (!first) return out;
     const double R = pos.params.ball_radius;
     for (int pocket = 0; pocket < 6; ++pocket)
-        if (std::optional<Combination> c = combination_aim(pos.table, R, cue, lowest.front(), 9,
-                                                           pocket, pos.state.positions))
+        if (std::optional<Combination> c =
+                combination_aim(pos.table, R, cue, *first, 9, pocket, pos.state.positions))
             out.push_back({*c, combination_chance(*c, R, sigma_deg)});
     std::stable_sort(out.begin(), out.end(), [](const RankedCombination& a,
                                                 const RankedCombination& b) {

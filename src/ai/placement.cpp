@@ -103,15 +103,12 @@ std::vector<Vec2> cue_spots(const Position& pos, int count, double sigma_deg) {
 std::vector<Vec2> combination_spots(const Position& pos, int count, double sigma_deg,
                                     double min_chance) {
     std::vector<Spot> best;  // the best spot of each pocket
-    if (pos.ruleset.game != rules::Game::nine_ball || count <= 0 ||
-        pos.state.cue_ball != rules::CueBall::in_hand)
-        return {};
-    const std::vector<int> lowest = target_balls(pos.ruleset, pos.state);
-    if (lowest.size() != 1 || lowest.front() == 9 || !pos.state.on_table.count(9)) return {};
+    const std::optional<int> first = combination_first_ball(pos.ruleset, pos.state);
+    if (!first || count <= 0 || pos.state.cue_ball != rules::CueBall::in_hand) return {};
     const double R = pos.params.ball_radius;
     for (int pocket = 0; pocket < 6; ++pocket) {
         std::optional<Combination> path =
-            combination_path(pos.table, R, lowest.front(), 9, pocket, pos.state.positions);
+            combination_path(pos.table, R, *first, 9, pocket, pos.state.positions);
         if (!path) continue;
         Spot top{{}, 0.0, pocket};
         const Vec2 back = -1.0 * path->first.object_dir;
@@ -119,8 +116,8 @@ std::vector<Vec2> combination_spots(const Position& pos, int count, double sigma
             for (double turn : {0.0, 0.35, -0.35}) {
                 const Vec2 p = path->first.ghost + d * rotate(back, turn);
                 if (!free_spot(pos, p)) continue;
-                if (std::optional<Combination> c = combination_aim(
-                        pos.table, R, p, lowest.front(), 9, pocket, pos.state.positions)) {
+                if (std::optional<Combination> c =
+                        combination_aim(pos.table, R, p, *first, 9, pocket, pos.state.positions)) {
                     const double q = combination_chance(*c, R, sigma_deg);
                     if (q > top.score) top = {p, q, pocket};
                 }

@@ -1,8 +1,9 @@
 // The AI's decision in one position (the `decide` verb of cli-contract.md):
 //
 //   choice pending ─▶ the option worth most (table_value.hpp)
-//   break          ─▶ break candidates, each played with noise draws
+//   break          ─▶ break candidates, each played with noise draws (9-ball, level 5: the tuned)
 //   else           ─▶ cue spots (ball in hand: placement.hpp) ─▶ pots + safeties per spot
+//                     (9-ball, level 5: + combinations on the 9, with spots of their own)
 //                     ─▶ noiseless play of each (the shortlist) ─▶ kicks if nothing is legal or good
 //                     ─▶ shortlist × noise draws ─▶ finalists × more draws ─▶ the best mean
 //                     ─▶ 9-ball: a push-out instead, when that is worth more

@@ -27,6 +27,13 @@ std::vector<int> target_balls(const rules::Ruleset& rules, const rules::GameStat
     return {legal.begin(), legal.end()};
 }
 
+std::optional<int> combination_first_ball(const rules::Ruleset& rules, const rules::GameState& s) {
+    if (rules.game != rules::Game::nine_ball || !s.has(9)) return std::nullopt;
+    const std::optional<int> low = rules::lowest_ball(s);
+    if (!low || *low == 9) return std::nullopt;
+    return low;
+}
+
 bool legal_first(const rules::Ruleset& rules, const rules::GameState& s, int ball) {
     if (rules.game == rules::Game::nine_ball) return rules::lowest_ball(s) == ball;
     return rules::eight_ball_legal_first(s).count(ball) != 0;

@@ -39,6 +39,10 @@ bool cue_in_hand(const rules::GameState& s);
 /// an open table, the 8 once his group is cleared; 9-ball: the lowest ball).
 std::vector<int> target_balls(const rules::Ruleset& rules, const rules::GameState& s);
 
+/// 9-ball: the ball a combination on the 9 starts from (the lowest ball, while the 9 is on the
+/// table and is not the lowest); empty in 8-ball.
+std::optional<int> combination_first_ball(const rules::Ruleset& rules, const rules::GameState& s);
+
 /// Whether the cue ball may hit `ball` first (the legal first contacts of `s`).
 bool legal_first(const rules::Ruleset& rules, const rules::GameState& s, int ball);
 
