@@ -10,6 +10,7 @@ namespace {
 using physics::Vec2;
 
 constexpr double max_cut_deg = 80.0;
+constexpr double max_combination_cut_deg = 45.0;  // a combination's cut of its second ball
 constexpr double clearance_slack = 1e-4;  // (unit: m)
 
 double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
@@ -101,7 +102,6 @@ std::optional<Aim> direct_aim(const physics::Table& table, double radius, Vec2 c
 std::optional<Combination> combination_path(const physics::Table& table, double radius, int first,
                                             int second, int pocket,
                                             const std::map<int, Vec2>& balls) {
-    constexpr double max_combination_cut_deg = 45.0;  // at the second ball
     auto it = balls.find(first);
     if (first == second || it == balls.end()) return std::nullopt;
     std::optional<Aim> to_pocket = object_path(table, radius, second, pocket, balls);
@@ -114,8 +114,10 @@ std::optional<Combination> combination_path(const physics::Table& table, double 
     f.object_distance = physics::norm(f.aim_point - start);
     if (f.object_distance < 1e-6) return std::nullopt;
     f.object_dir = unit(f.aim_point - start);
-    const double cos_second = std::clamp(physics::dot(f.object_dir, to_pocket->object_dir), -1.0, 1.0);
-    if (std::acos(cos_second) / deg > max_combination_cut_deg) return std::nullopt;
+    const double cos_second =
+        std::clamp(physics::dot(f.object_dir, to_pocket->object_dir), -1.0, 1.0);
+    const double cut_second_deg = std::acos(cos_second) / deg;
+    if (cut_second_deg > max_combination_cut_deg) return std::nullopt;
     if (!path_clear(start, f.aim_point, balls, first, second, radius)) return std::nullopt;
     // An error ε of the first ball's direction turns the second by about ε·(d / (2R cos φ) + 1).
     const double gain = f.object_distance / (2.0 * radius * cos_second) + 1.0;
@@ -126,7 +128,7 @@ std::optional<Combination> combination_path(const physics::Table& table, double 
         if (id != first && physics::norm(p - f.ghost) < 2.0 * radius - clearance_slack)
             return std::nullopt;
     Aim s = *to_pocket;
-    s.cut_deg = std::acos(cos_second) / deg;
+    s.cut_deg = cut_second_deg;
     return Combination{f, s};
 }
 
@@ -151,7 +153,7 @@ std::optional<Combination> combination_aim(const physics::Table& table, double r
 
 double combination_chance(const Combination& c, double radius, double sigma_deg) {
     // The second contact throws the second ball by a little that no refinement corrects.
-    const double thin = 1.0 - 0.25 * std::pow(c.second.cut_deg / 45.0, 2.0);
+    const double thin = 1.0 - 0.25 * std::pow(c.second.cut_deg / max_combination_cut_deg, 2.0);
     return aim_chance(c.first, radius, sigma_deg) * thin;
 }
 

@@ -5,15 +5,6 @@
 
 namespace ai {
 
-namespace {
-
-// Kitchen spots tried for a ball in hand in the kitchen (fractions of the kitchen's length and
-// of the width).
-constexpr std::array<double, 3> kitchen_x{0.35, 0.65, 0.92};
-constexpr std::array<double, 5> kitchen_y{0.12, 0.3, 0.5, 0.7, 0.88};
-
-}  // namespace
-
 double ball_chance_anywhere(const Position& base, const rules::GameState& s, int ball,
                             double sigma_deg) {
     const double R = base.params.ball_radius;
@@ -40,6 +31,11 @@ double ball_chance_anywhere(const Position& base, const rules::GameState& s, int
 }
 
 namespace {
+
+// Kitchen spots tried for a ball in hand in the kitchen (fractions of the kitchen's length and
+// of the width).
+constexpr std::array<double, 3> kitchen_x{0.35, 0.65, 0.92};
+constexpr std::array<double, 5> kitchen_y{0.12, 0.3, 0.5, 0.7, 0.88};
 
 // The best pot with the cue ball free to go anywhere (`ball_chance_anywhere` of the best ball).
 double best_in_hand_anywhere(const Position& base, const rules::GameState& s, double sigma_deg) {
