@@ -45,6 +45,16 @@ Effort rack_end_effort(int level) {
     return effort;
 }
 
+Effort nine_ball_effort(int level) {
+    Effort effort = effort_for_level(level);
+    if (level >= max_level) {
+        effort.polish = 8;
+        effort.deep_finalists = 16;
+        effort.deep_samples = 32;
+    }
+    return effort;
+}
+
 Effort for_game(Effort effort, rules::Game game) {
     if (game != rules::Game::eight_ball) {
         effort.distinct_leaves = 0.0;

@@ -59,6 +59,12 @@ Effort effort_for_level(int level);
 /// last few balls decide the rack and a decision has fewer candidates; other levels as elsewhere.
 Effort rack_end_effort(int level);
 
+/// The effort of `level` in 9-ball (the planner's choice for every 9-ball decision): level 5
+/// searches deeper there (8 pots searched finer instead of 4, 16 deep finalists of 32 draws
+/// instead of 8 of 16), where each decision has few candidates (one target ball) and the
+/// second ply decides; other levels as elsewhere. docs/ai.md, stop 19.
+Effort nine_ball_effort(int level);
+
 /// `effort` for a game of `game`: the 8-ball-only parts (distinct leaves, the stuck-ball cost)
 /// set to 0 in 9-ball, where the next ball is always the lowest; the 9-ball-only parts
 /// (combinations on the 9, the tuned breaks) off in 8-ball.

@@ -134,10 +134,12 @@ Plan plan_choice(const Position& pos, double sigma_deg, double stuck_cost) {
 }
 
 // The level's effort for `pos`: level 5 searches wider near the end of an 8-ball rack
-// (rack_end_effort; in 9-ball the wider search was not shown to help: docs/ai.md, stop 17).
+// (rack_end_effort; in 9-ball that wider search was not shown to help: docs/ai.md, stop 17) and
+// deeper in every 9-ball decision (nine_ball_effort; stop 19).
 Effort effort_for(const Position& pos, int level) {
-    const bool rack_end =
-        pos.ruleset.game == rules::Game::eight_ball && near_rack_end(pos.ruleset, pos.state);
+    if (pos.ruleset.game == rules::Game::nine_ball)
+        return for_game(nine_ball_effort(level), pos.ruleset.game);
+    const bool rack_end = near_rack_end(pos.ruleset, pos.state);
     return for_game(rack_end ? rack_end_effort(level) : effort_for_level(level), pos.ruleset.game);
 }
 

@@ -1,6 +1,6 @@
 // The end of a rack (table_value.hpp's near_rack_end, level.hpp's rack_end_effort): where the
 // shooter's last few balls are left, level 5 searches wider; elsewhere, and at lower levels, the
-// effort is the level's own.
+// effort is the level's own. And 9-ball's own effort (nine_ball_effort), deeper at level 5.
 #include <gtest/gtest.h>
 
 #include "ai/level.hpp"
@@ -64,6 +64,36 @@ TEST(RackEndEffort, OnlyLevelFiveSearchesWiderAndOnlyInTheSearchAfterTheGrid) {
     EXPECT_EQ(end.next_pairs, usual.next_pairs);
     // Each deep draw is one of the search's draws (planner.cpp draws 2 × samples of them).
     EXPECT_LE(end.deep_samples, 2 * end.samples);
+}
+
+}  // namespace
+
+// 9-ball (level.hpp's nine_ball_effort): level 5 searches deeper in every decision; the other
+// levels as elsewhere.
+namespace {
+
+TEST(NineBallEffort, OnlyLevelFiveSearchesDeeperAndOnlyAfterTheNoisyRounds) {
+    for (int level = ai::min_level; level < ai::max_level; ++level) {
+        const ai::Effort usual = ai::effort_for_level(level);
+        const ai::Effort nine = ai::nine_ball_effort(level);
+        EXPECT_EQ(nine.polish, usual.polish) << "level " << level;
+        EXPECT_EQ(nine.deep_finalists, usual.deep_finalists) << "level " << level;
+        EXPECT_EQ(nine.deep_samples, usual.deep_samples) << "level " << level;
+    }
+    const ai::Effort usual = ai::effort_for_level(ai::max_level);
+    const ai::Effort nine = ai::nine_ball_effort(ai::max_level);
+    EXPECT_GT(nine.polish, usual.polish);
+    EXPECT_GT(nine.deep_finalists, usual.deep_finalists);
+    EXPECT_GT(nine.deep_samples, usual.deep_samples);
+    // The candidates, the noisy rounds and the second ply's strokes are the usual ones.
+    EXPECT_EQ(nine.shortlist, usual.shortlist);
+    EXPECT_EQ(nine.samples, usual.samples);
+    EXPECT_EQ(nine.finalists, usual.finalists);
+    EXPECT_EQ(nine.next_pairs, usual.next_pairs);
+    EXPECT_EQ(nine.next_speeds, usual.next_speeds);
+    EXPECT_EQ(nine.next_spins, usual.next_spins);
+    EXPECT_LE(nine.deep_samples, 2 * nine.samples);  // each deep draw one of the search's
+    EXPECT_LE(nine.deep_finalists, nine.finalists + nine.polish * 6);
 }
 
 }  // namespace
