@@ -50,7 +50,7 @@ Effort nine_ball_effort(int level) {
     if (level >= max_level) {
         effort.polish = 8;
         effort.deep_finalists = 16;
-        effort.deep_samples = 32;
+        effort.deep_samples = 64;
     }
     return effort;
 }

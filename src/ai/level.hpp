@@ -60,9 +60,9 @@ Effort effort_for_level(int level);
 Effort rack_end_effort(int level);
 
 /// The effort of `level` in 9-ball (the planner's choice for every 9-ball decision): level 5
-/// searches deeper there (8 pots searched finer instead of 4, 16 deep finalists of 32 draws
+/// searches deeper there (8 pots searched finer instead of 4, 16 deep finalists of 64 draws
 /// instead of 8 of 16), where each decision has few candidates (one target ball) and the
-/// second ply decides; other levels as elsewhere. docs/ai.md, stop 19.
+/// second ply decides; other levels as elsewhere. docs/ai.md, stops 19 and 20.
 Effort nine_ball_effort(int level);
 
 /// `effort` for a game of `game`: the 8-ball-only parts (distinct leaves, the stuck-ball cost)
