@@ -142,25 +142,36 @@ std::int64_t score_under_noise(const Evaluator& eval, const std::vector<Candidat
 
 std::int64_t score_deep(const Evaluator& eval, const std::vector<Candidate>& candidates,
                         const std::vector<std::size_t>& which, const std::vector<NoiseDraw>& draws,
-                        std::size_t count, const Effort& effort, std::vector<Score>& scores,
-                        int workers) {
-    const std::size_t n = std::max<std::size_t>(std::min(count, draws.size()), 1);
+                        std::size_t first, std::size_t count, const Effort& effort,
+                        std::vector<Score>& scores, int workers) {
+    // Without noise (no draws) one exact play; else the draws [first, first + count) there are.
+    const std::size_t begin = draws.empty() ? 0 : std::min(first, draws.size());
+    const std::size_t n = draws.empty() ? 1 : std::min(count, draws.size() - begin);
+    if (n == 0) return 0;
     std::vector<Trial> trials(which.size() * n);
     const NoiseDraw none;
     parallel_for(trials.size(), workers, [&](std::size_t k) {
         const Candidate& c = candidates[which[k / n]];
-        trials[k] = eval.deep_trial(c, draws.empty() ? none : draws[k % n], effort);
+        trials[k] = eval.deep_trial(c, draws.empty() ? none : draws[begin + k % n], effort);
     });
     std::int64_t sims = 0;
     for (std::size_t w = 0; w < which.size(); ++w) {  // reduce in index order: same bits always
         Score& s = scores[which[w]];
-        double deeper = 0.0;
+        double shallow = s.value - (s.deep_draws > 0 ? s.deep_sum / s.deep_draws : 0.0);
+        double success = s.success;
         for (std::size_t d = 0; d < n; ++d) {
             const Trial& t = trials[w * n + d];
-            deeper += t.value - t.shallow;
+            s.deep_sum += t.value - t.shallow;
+            ++s.deep_draws;
+            if (!draws.empty() && begin + d >= static_cast<std::size_t>(s.samples)) {
+                shallow = (shallow * s.samples + t.shallow) / (s.samples + 1);
+                success = (success * s.samples + (t.success ? 1.0 : 0.0)) / (s.samples + 1);
+                ++s.samples;
+            }
             sims += t.simulations;
         }
-        s.value += deeper / static_cast<double>(n);
+        s.value = shallow + s.deep_sum / s.deep_draws;
+        s.success = success;
     }
     return sims;
 }

@@ -40,11 +40,13 @@ struct Trial {
 
 /// The mean of a candidate's trials.
 struct Score {
-    double value = 0.0;
+    double value = 0.0;  ///< the one-ply mean, plus the mean deep correction once valued deeper
     double success = 0.0;
-    int samples = 0;
-    bool foul = false;  ///< the noiseless stroke fouls
-    int leave = -1;     ///< the noiseless stroke's Trial::leave
+    int samples = 0;        ///< one-ply draws
+    bool foul = false;      ///< the noiseless stroke fouls
+    int leave = -1;         ///< the noiseless stroke's Trial::leave
+    double deep_sum = 0.0;  ///< score_deep: the sum of the two- less the one-ply values
+    int deep_draws = 0;     ///< score_deep: the draws of that sum
 };
 
 class Evaluator {
@@ -84,13 +86,14 @@ std::int64_t score_under_noise(const Evaluator& eval, const std::vector<Candidat
                                std::size_t count, std::vector<Score>& scores, int workers);
 
 /// Scores each candidate of `which` two plies deep (Evaluator::deep_trial) with the draws
-/// [0, count), which `scores` must already hold one ply deep: each score's value moves by the
-/// mean difference between its two- and one-ply values on those draws (a control variate: the
-/// outcome the two share cancels, and the difference is far less noisy than either). `workers`
-/// threads. Returns the simulations run.
+/// [first, first + count), which `scores` must already hold one ply deep: each score's value is
+/// its one-ply mean moved by the mean difference between its two- and one-ply values on the
+/// draws valued deeper so far (a control variate: the outcome the two share cancels, and the
+/// difference is far less noisy than either). A draw beyond the score's one-ply draws adds its
+/// one-ply value to the one-ply mean too. `workers` threads. Returns the simulations run.
 std::int64_t score_deep(const Evaluator& eval, const std::vector<Candidate>& candidates,
                         const std::vector<std::size_t>& which, const std::vector<NoiseDraw>& draws,
-                        std::size_t count, const Effort& effort, std::vector<Score>& scores,
-                        int workers);
+                        std::size_t first, std::size_t count, const Effort& effort,
+                        std::vector<Score>& scores, int workers);
 
 }  // namespace ai

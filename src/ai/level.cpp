@@ -33,6 +33,11 @@ Effort effort_for_level(int level) {
     return levels[static_cast<std::size_t>(std::clamp(level, min_level, max_level) - 1)];
 }
 
+int deepest_draws(const Effort& effort) {
+    if (effort.deep_halvings <= 0) return effort.deep_samples;
+    return effort.deep_samples << (effort.deep_halvings - 1);
+}
+
 Effort rack_end_effort(int level) {
     Effort effort = effort_for_level(level);
     if (level >= max_level) {
@@ -49,8 +54,9 @@ Effort nine_ball_effort(int level) {
     Effort effort = effort_for_level(level);
     if (level >= max_level) {
         effort.polish = 8;
-        effort.deep_finalists = 16;
+        effort.deep_finalists = 32;
         effort.deep_samples = 64;
+        effort.deep_halvings = 2;
     }
     return effort;
 }

@@ -28,10 +28,17 @@ struct Effort {
     int polish = 0;           ///< the best few pots after the noisy rounds, searched around finer
     int deep_finalists = 0;   ///< the best few after the noisy rounds, valued two plies deep
     int deep_samples = 0;     ///< noisy plays per deep finalist, each valued by lookahead.hpp
-    int next_pairs = 3;       ///< second ply: (ball, pocket) pairs tried
-    int next_speeds = 3;      ///< second ply: speeds per aim
-    int next_spins = 3;       ///< second ply: spins per aim
-    int refine_steps = 2;     ///< secant steps of the heading refinement (aim.hpp) per pot
+    /// Rounds of the deep search after the first that keep the better half of the deep
+    /// finalists only (0: one round, every deep finalist played with `deep_samples` draws).
+    /// With h of them: every deep finalist gets `deep_samples` / 2 draws, then the better half
+    /// more up to `deep_samples`, and each later round the better half again twice the draws
+    /// so far. Two halvings play as many deep trials as one round and give the best quarter
+    /// twice the draws (`deepest_draws`).
+    int deep_halvings = 0;
+    int next_pairs = 3;    ///< second ply: (ball, pocket) pairs tried
+    int next_speeds = 3;   ///< second ply: speeds per aim
+    int next_spins = 3;    ///< second ply: spins per aim
+    int refine_steps = 2;  ///< secant steps of the heading refinement (aim.hpp) per pot
     /// 8-ball: of the shortlist, the finalists and the deep finalists, up to this share goes
     /// first to the best stroke of each distinct leave (the ball of the next pot it leaves,
     /// played without noise; selection.hpp), so that strokes leaving another ball than the
@@ -53,6 +60,9 @@ struct Effort {
 /// The effort of `level` (clamped to 1–5).
 Effort effort_for_level(int level);
 
+/// The most noise draws a deep finalist of `effort` gets (`Effort::deep_halvings`).
+int deepest_draws(const Effort& effort);
+
 /// The effort of `level` near the end of an 8-ball rack (table_value.hpp's `near_rack_end`; the
 /// planner uses it in 8-ball only): level 5 searches wider there (twice the shortlist, half as
 /// many finalists and polished pots again, 12 deep finalists of 32 draws), where the shooter's
@@ -60,9 +70,10 @@ Effort effort_for_level(int level);
 Effort rack_end_effort(int level);
 
 /// The effort of `level` in 9-ball (the planner's choice for every 9-ball decision): level 5
-/// searches deeper there (8 pots searched finer instead of 4, 16 deep finalists of 64 draws
-/// instead of 8 of 16), where each decision has few candidates (one target ball) and the
-/// second ply decides; other levels as elsewhere. docs/ai.md, stops 19 and 20.
+/// searches deeper there (8 pots searched finer instead of 4; 32 deep finalists instead of 8,
+/// in two halvings: 32 draws each, 32 more for the better 16, 64 more for the best 8), where
+/// each decision has few candidates (one target ball) and the second ply decides; other levels
+/// as elsewhere. docs/ai.md, stops 19, 20 and 22.
 Effort nine_ball_effort(int level);
 
 /// `effort` for a game of `game`: the 8-ball-only parts (distinct leaves, the stuck-ball cost)

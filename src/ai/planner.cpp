@@ -100,9 +100,22 @@ std::size_t choose_under_noise(Search& s, std::vector<Candidate>& cands,
     if (deeper && s.effort.deep_finalists > 0) {
         list = distinct_best_of(noisy, nominal, list,
                                 static_cast<std::size_t>(s.effort.deep_finalists), share);
-        const std::size_t m =
-            s.eval.scale() == 0.0 ? 1 : static_cast<std::size_t>(s.effort.deep_samples);
-        s.simulations += score_deep(s.eval, cands, list, s.draws, m, s.effort, noisy, s.workers);
+        if (s.eval.scale() == 0.0 || s.effort.deep_halvings <= 0) {
+            const std::size_t m =
+                s.eval.scale() == 0.0 ? 1 : static_cast<std::size_t>(s.effort.deep_samples);
+            s.simulations +=
+                score_deep(s.eval, cands, list, s.draws, 0, m, s.effort, noisy, s.workers);
+        } else {  // successive halving: the better half of each round gets as many draws again
+            std::size_t done = static_cast<std::size_t>(std::max(s.effort.deep_samples / 2, 1));
+            s.simulations +=
+                score_deep(s.eval, cands, list, s.draws, 0, done, s.effort, noisy, s.workers);
+            for (int h = 0; h < s.effort.deep_halvings && list.size() > 1; ++h) {
+                list = best_of(noisy, list, (list.size() + 1) / 2);
+                s.simulations += score_deep(s.eval, cands, list, s.draws, done, done, s.effort,
+                                            noisy, s.workers);
+                done *= 2;
+            }
+        }
     }
     return best_of(noisy, list, 1).front();
 }
@@ -173,7 +186,8 @@ Plan plan(const Position& pos, const PlanSettings& settings, std::uint64_t seed)
     if (pos.choice) return plan_choice(pos, sigma_deg, effort.stuck_ball_cost);
 
     Search s{pos, effort, Evaluator(pos, scale, sigma_deg, effort.stuck_ball_cost),
-             noise_draws(seed, 2 * std::max(effort.samples, effort.break_samples)),
+             noise_draws(seed, std::max(2 * std::max(effort.samples, effort.break_samples),
+                                        deepest_draws(effort))),
              std::max(settings.workers, 1)};
     if (pos.state.shot == rules::Shot::break_shot) return plan_break(s);
 
