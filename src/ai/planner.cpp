@@ -100,21 +100,20 @@ std::size_t choose_under_noise(Search& s, std::vector<Candidate>& cands,
     if (deeper && s.effort.deep_finalists > 0) {
         list = distinct_best_of(noisy, nominal, list,
                                 static_cast<std::size_t>(s.effort.deep_finalists), share);
-        if (s.eval.scale() == 0.0 || s.effort.deep_halvings <= 0) {
-            const std::size_t m =
-                s.eval.scale() == 0.0 ? 1 : static_cast<std::size_t>(s.effort.deep_samples);
+        // Without noise one exact play; else one round of deep_samples draws, or successive
+        // halving: half of them first, then the better half of each round as many again.
+        const int halvings = s.eval.scale() == 0.0 ? 0 : std::max(s.effort.deep_halvings, 0);
+        std::size_t done = 1;
+        if (s.eval.scale() != 0.0) {
+            const int m = s.effort.deep_samples;
+            done = static_cast<std::size_t>(std::max(halvings > 0 ? m / 2 : m, 1));
+        }
+        s.simulations +=
+            score_deep(s.eval, cands, list, s.draws, 0, done, s.effort, noisy, s.workers);
+        for (int h = 0; h < halvings && list.size() > 1; ++h, done *= 2) {
+            list = best_of(noisy, list, (list.size() + 1) / 2);
             s.simulations +=
-                score_deep(s.eval, cands, list, s.draws, 0, m, s.effort, noisy, s.workers);
-        } else {  // successive halving: the better half of each round gets as many draws again
-            std::size_t done = static_cast<std::size_t>(std::max(s.effort.deep_samples / 2, 1));
-            s.simulations +=
-                score_deep(s.eval, cands, list, s.draws, 0, done, s.effort, noisy, s.workers);
-            for (int h = 0; h < s.effort.deep_halvings && list.size() > 1; ++h) {
-                list = best_of(noisy, list, (list.size() + 1) / 2);
-                s.simulations += score_deep(s.eval, cands, list, s.draws, done, done, s.effort,
-                                            noisy, s.workers);
-                done *= 2;
-            }
+                score_deep(s.eval, cands, list, s.draws, done, done, s.effort, noisy, s.workers);
         }
     }
     return best_of(noisy, list, 1).front();
