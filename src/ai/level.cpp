@@ -27,7 +27,8 @@ Effort effort_for_level(int level) {
          .safety_contacts = 7, .sweep_headings = 720, .shortlist = 48, .samples = 40, .finalists = 8,
          .placements = 6, .break_samples = 12, .polish = 4, .deep_finalists = 8, .deep_samples = 16,
          .next_pairs = 3, .next_speeds = 4, .next_spins = 4, .distinct_leaves = 0.5,
-         .stuck_ball_cost = 0.04, .combinations = 3, .tuned_breaks = true},
+         .stuck_ball_cost = 0.04, .combinations = 3, .tuned_breaks = true,
+         .fresh_deep_draws = true},
     }};
     // clang-format on
     return levels[static_cast<std::size_t>(std::clamp(level, min_level, max_level) - 1)];
@@ -36,6 +37,12 @@ Effort effort_for_level(int level) {
 int deepest_draws(const Effort& effort) {
     if (effort.deep_halvings <= 0) return effort.deep_samples;
     return effort.deep_samples << (effort.deep_halvings - 1);
+}
+
+int draw_pool(const Effort& effort) {
+    const int one_ply = 2 * std::max(effort.samples, effort.break_samples);
+    return effort.fresh_deep_draws ? one_ply + deepest_draws(effort)
+                                   : std::max(one_ply, deepest_draws(effort));
 }
 
 Effort rack_end_effort(int level) {
@@ -68,6 +75,7 @@ Effort for_game(Effort effort, rules::Game game) {
     } else {
         effort.combinations = 0;
         effort.tuned_breaks = false;
+        effort.fresh_deep_draws = false;
     }
     return effort;
 }

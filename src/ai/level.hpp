@@ -55,6 +55,11 @@ struct Effort {
     /// 9-ball: breaks among the few tuned offline (candidates.hpp's `tuned_breaks`) rather than
     /// the broad set (in 8-ball they scratched more and cleared no more racks: docs/ai.md).
     bool tuned_breaks = false;
+    /// 9-ball: the deep search plays noise draws of its own, after those of the one-ply rounds,
+    /// rather than those again: a finalist reached the deep search by its luck on the one-ply
+    /// draws, and the same draws would carry that luck into its deep value (docs/ai.md, stop 23;
+    /// in 8-ball not shown to help).
+    bool fresh_deep_draws = false;
 };
 
 /// The effort of `level` (clamped to 1–5).
@@ -62,6 +67,11 @@ Effort effort_for_level(int level);
 
 /// The most noise draws a deep finalist of `effort` gets (`Effort::deep_halvings`).
 int deepest_draws(const Effort& effort);
+
+/// The noise draws a decision of `effort` needs: those of the one-ply rounds (the shortlist's
+/// and the finalists', or the breaks'), and the deep search's, after them where it has draws
+/// of its own (`Effort::fresh_deep_draws`), else among them.
+int draw_pool(const Effort& effort);
 
 /// The effort of `level` near the end of an 8-ball rack (table_value.hpp's `near_rack_end`; the
 /// planner uses it in 8-ball only): level 5 searches wider there (twice the shortlist, half as
@@ -78,7 +88,7 @@ Effort nine_ball_effort(int level);
 
 /// `effort` for a game of `game`: the 8-ball-only parts (distinct leaves, the stuck-ball cost)
 /// set to 0 in 9-ball, where the next ball is always the lowest; the 9-ball-only parts
-/// (combinations on the 9, the tuned breaks) off in 8-ball.
+/// (combinations on the 9, the tuned breaks, the deep search's own draws) off in 8-ball.
 Effort for_game(Effort effort, rules::Game game);
 
 }  // namespace ai

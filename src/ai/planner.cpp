@@ -101,19 +101,22 @@ std::size_t choose_under_noise(Search& s, std::vector<Candidate>& cands,
         list = distinct_best_of(noisy, nominal, list,
                                 static_cast<std::size_t>(s.effort.deep_finalists), share);
         // Without noise one exact play; else one round of deep_samples draws, or successive
-        // halving: half of them first, then the better half of each round as many again.
-        const int halvings = s.eval.scale() == 0.0 ? 0 : std::max(s.effort.deep_halvings, 0);
+        // halving: half of them first, then the better half of each round as many again. With
+        // draws of its own (level.hpp) they come after the `drawn` of the one-ply rounds.
+        const bool noisy_play = s.eval.scale() != 0.0;
+        const int halvings = noisy_play ? std::max(s.effort.deep_halvings, 0) : 0;
+        const std::size_t first = noisy_play && s.effort.fresh_deep_draws ? drawn : 0;
         std::size_t done = 1;
-        if (s.eval.scale() != 0.0) {
+        if (noisy_play) {
             const int m = s.effort.deep_samples;
             done = static_cast<std::size_t>(std::max(halvings > 0 ? m / 2 : m, 1));
         }
         s.simulations +=
-            score_deep(s.eval, cands, list, s.draws, 0, done, s.effort, noisy, s.workers);
+            score_deep(s.eval, cands, list, s.draws, first, done, s.effort, noisy, s.workers);
         for (int h = 0; h < halvings && list.size() > 1; ++h, done *= 2) {
             list = best_of(noisy, list, (list.size() + 1) / 2);
-            s.simulations +=
-                score_deep(s.eval, cands, list, s.draws, done, done, s.effort, noisy, s.workers);
+            s.simulations += score_deep(s.eval, cands, list, s.draws, first + done, done, s.effort,
+                                        noisy, s.workers);
         }
     }
     return best_of(noisy, list, 1).front();
@@ -185,9 +188,7 @@ Plan plan(const Position& pos, const PlanSettings& settings, std::uint64_t seed)
     if (pos.choice) return plan_choice(pos, sigma_deg, effort.stuck_ball_cost);
 
     Search s{pos, effort, Evaluator(pos, scale, sigma_deg, effort.stuck_ball_cost),
-             noise_draws(seed, std::max(2 * std::max(effort.samples, effort.break_samples),
-                                        deepest_draws(effort))),
-             std::max(settings.workers, 1)};
+             noise_draws(seed, draw_pool(effort)), std::max(settings.workers, 1)};
     if (pos.state.shot == rules::Shot::break_shot) return plan_break(s);
 
     const bool in_hand = cue_in_hand(pos.state);

@@ -2,9 +2,10 @@
 // two plies deep in several rounds of draws comes to the same score as one round, a draw beyond
 // the one-ply draws counts in the one-ply mean too, without noise one play is exact, and the
 // halvings' schedule plays as many deep trials as one round while its best quarter gets twice
-// the draws.
+// the draws; level 5's deep search plays draws of its own, after the one-ply rounds' ones.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -119,6 +120,45 @@ TEST(DeepHalvings, PlayAsManyTrialsAsOneRoundAndGiveTheBestQuarterTwiceTheDraws)
     for (int level = ai::min_level; level < ai::max_level; ++level)
         EXPECT_EQ(ai::nine_ball_effort(level).deep_halvings, 0) << "level " << level;
     EXPECT_EQ(ai::effort_for_level(ai::max_level).deep_halvings, 0);  // 8-ball: one round
+}
+
+TEST(DeepDraws, LevelFivePlaysDrawsOfItsOwnAfterTheOnePlyRounds) {
+    for (const ai::Effort& e :
+         {ai::effort_for_level(ai::max_level), ai::nine_ball_effort(ai::max_level),
+          ai::rack_end_effort(ai::max_level)}) {
+        EXPECT_TRUE(e.fresh_deep_draws);
+        EXPECT_EQ(ai::draw_pool(e), 2 * e.samples + ai::deepest_draws(e));
+    }
+    const ai::Effort eight = ai::for_game(ai::effort_for_level(ai::max_level), Game::eight_ball);
+    EXPECT_FALSE(eight.fresh_deep_draws);  // 8-ball: among the one-ply draws, as before stop 23
+    EXPECT_TRUE(
+        ai::for_game(ai::nine_ball_effort(ai::max_level), Game::nine_ball).fresh_deep_draws);
+    for (int level = ai::min_level; level < ai::max_level; ++level) {  // as before stop 23
+        const ai::Effort e = ai::effort_for_level(level);
+        EXPECT_FALSE(e.fresh_deep_draws) << "level " << level;
+        EXPECT_EQ(ai::draw_pool(e),
+                  std::max({2 * e.samples, 2 * e.break_samples, ai::deepest_draws(e)}));
+    }
+}
+
+TEST(DeepDraws, OwnDrawsExtendTheOnePlyMeanByEachOfThem) {
+    // A finalist with 4 one-ply draws, valued deep on the next 8: 12 draws in its one-ply mean,
+    // 8 in its deep correction, none counted twice.
+    const Fixture f;
+    std::vector<ai::Score> scores = f.one_ply(4);
+    ai::score_deep(f.eval, f.cands, f.which, f.draws, 4, 8, f.effort, scores, 2);
+    for (std::size_t i : f.which) {
+        double shallow = 0.0, correction = 0.0;
+        for (std::size_t d = 0; d < 12; ++d) {
+            const ai::Trial t = d < 4 ? f.eval.trial(f.cands[i], f.draws[d])
+                                      : f.eval.deep_trial(f.cands[i], f.draws[d], f.effort);
+            shallow += t.shallow;
+            if (d >= 4) correction += t.value - t.shallow;
+        }
+        EXPECT_EQ(scores[i].samples, 12) << "candidate " << i;
+        EXPECT_EQ(scores[i].deep_draws, 8);
+        EXPECT_NEAR(scores[i].value, shallow / 12.0 + correction / 8.0, 1e-12);
+    }
 }
 
 }  // namespace
