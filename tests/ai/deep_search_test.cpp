@@ -2,7 +2,7 @@
 // two plies deep in several rounds of draws comes to the same score as one round, a draw beyond
 // the one-ply draws counts in the one-ply mean too, without noise one play is exact, and the
 // halvings' schedule plays as many deep trials as one round while its best quarter gets twice
-// the draws; level 5's deep search plays draws of its own, after the one-ply rounds' ones.
+// the draws; level 5's deep search in 9-ball plays draws of its own, after the one-ply rounds'.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -122,7 +122,7 @@ TEST(DeepHalvings, PlayAsManyTrialsAsOneRoundAndGiveTheBestQuarterTwiceTheDraws)
     EXPECT_EQ(ai::effort_for_level(ai::max_level).deep_halvings, 0);  // 8-ball: one round
 }
 
-TEST(DeepDraws, LevelFivePlaysDrawsOfItsOwnAfterTheOnePlyRounds) {
+TEST(DeepDraws, LevelFiveIn9BallPlaysDrawsOfItsOwnAfterTheOnePlyRounds) {
     for (const ai::Effort& e :
          {ai::effort_for_level(ai::max_level), ai::nine_ball_effort(ai::max_level),
           ai::rack_end_effort(ai::max_level)}) {
