@@ -124,13 +124,18 @@ TEST(DeepHalvings, PlayAsManyTrialsAsOneRoundAndGiveTheBestQuarterTwiceTheDraws)
 
 TEST(DeepDraws, LevelFiveIn9BallPlaysDrawsOfItsOwnAfterTheOnePlyRounds) {
     for (const ai::Effort& e :
-         {ai::effort_for_level(ai::max_level), ai::nine_ball_effort(ai::max_level),
-          ai::rack_end_effort(ai::max_level)}) {
+         {ai::effort_for_level(ai::max_level), ai::nine_ball_effort(ai::max_level)}) {
         EXPECT_TRUE(e.fresh_deep_draws);
         EXPECT_EQ(ai::draw_pool(e), 2 * e.samples + ai::deepest_draws(e));
     }
-    const ai::Effort eight = ai::for_game(ai::effort_for_level(ai::max_level), Game::eight_ball);
-    EXPECT_FALSE(eight.fresh_deep_draws);  // 8-ball: among the one-ply draws, as before stop 23
+    // 8-ball, the end of the rack included: among the one-ply draws, as before stop 23.
+    for (const ai::Effort& e :
+         {ai::effort_for_level(ai::max_level), ai::rack_end_effort(ai::max_level)}) {
+        const ai::Effort eight = ai::for_game(e, Game::eight_ball);
+        EXPECT_FALSE(eight.fresh_deep_draws);
+        EXPECT_EQ(ai::draw_pool(eight),
+                  std::max({2 * eight.samples, 2 * eight.break_samples, ai::deepest_draws(eight)}));
+    }
     EXPECT_TRUE(
         ai::for_game(ai::nine_ball_effort(ai::max_level), Game::nine_ball).fresh_deep_draws);
     for (int level = ai::min_level; level < ai::max_level; ++level) {  // as before stop 23
