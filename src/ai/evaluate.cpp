@@ -64,7 +64,8 @@ physics::Stroke with_draw(const physics::Stroke& stroke, const NoiseDraw& d, dou
 }
 
 Trial Evaluator::play(const Candidate& c, const physics::Stroke& stroke, bool assign_call,
-                      rules::Call* call, const Effort* deeper, bool with_leave) const {
+                      rules::Call* call, const Effort* deeper, bool with_leave,
+                      std::optional<rules::GameState>* after) const {
     rules::GameState s = pos_.state;
     if (c.cue_pos) s.positions[0] = *c.cue_pos;
     const physics::Vec2 cue = s.positions.at(0);
@@ -91,6 +92,7 @@ Trial Evaluator::play(const Candidate& c, const physics::Stroke& stroke, bool as
         if (std::optional<BestAim> b = best_aim(pos_, v.state, v.state.positions.at(0), sigma_deg_))
             t.leave = b->aim.ball;
     }
+    if (after && stays && !v.choice) *after = v.state;
     if (deeper && stays && !v.choice) {
         t.value = staying_value(
             s, v.state, next_turn_value(pos_, v.state, *deeper, scale_, sigma_deg_, t.simulations));
@@ -104,6 +106,11 @@ Trial Evaluator::play(const Candidate& c, const physics::Stroke& stroke, bool as
 Trial Evaluator::nominal(Candidate& c, bool with_leave) const {
     if (c.kind == Kind::kick) return play(c, c.stroke, true, &c.call, nullptr, with_leave);
     return play(c, c.stroke, false, nullptr, nullptr, with_leave);
+}
+
+Trial Evaluator::nominal_to(const Candidate& c, std::optional<rules::GameState>& after) const {
+    after.reset();
+    return play(c, c.stroke, false, nullptr, nullptr, false, &after);
 }
 
 Trial Evaluator::trial(const Candidate& c, const NoiseDraw& draw) const {

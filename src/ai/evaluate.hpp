@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "ai/candidates.hpp"
@@ -65,12 +66,16 @@ class Evaluator {
     /// Plays the candidate with one noise draw (none at scale 0) and, where the shooter stays at
     /// the table, values the table two plies deep (lookahead.hpp) with `effort`'s second ply.
     Trial deep_trial(const Candidate& c, const NoiseDraw& draw, const Effort& effort) const;
+    /// Plays the candidate without noise, as `nominal` (its call kept), and where the shooter
+    /// stays at the table with no choice pending sets `after` to the state he comes back to.
+    Trial nominal_to(const Candidate& c, std::optional<rules::GameState>& after) const;
 
     double scale() const { return scale_; }
 
   private:
     Trial play(const Candidate& c, const physics::Stroke& stroke, bool assign_call,
-               rules::Call* call, const Effort* deeper = nullptr, bool with_leave = false) const;
+               rules::Call* call, const Effort* deeper = nullptr, bool with_leave = false,
+               std::optional<rules::GameState>* after = nullptr) const;
 
     const Position& pos_;
     double scale_;

@@ -26,8 +26,8 @@ Effort effort_for_level(int level) {
         {.noise_multiplier = 1.0, .pot_pairs = 14, .speeds = 7, .spins = 9, .safety_speeds = 4,
          .safety_contacts = 7, .sweep_headings = 720, .shortlist = 48, .samples = 40, .finalists = 8,
          .placements = 6, .break_samples = 12, .polish = 4, .deep_finalists = 8, .deep_samples = 16,
-         .next_pairs = 3, .next_speeds = 4, .next_spins = 4, .distinct_leaves = 0.5,
-         .stuck_ball_cost = 0.04, .combinations = 3, .tuned_breaks = true,
+         .next_pairs = 3, .next_speeds = 4, .next_spins = 4, .playout_shots = 4,
+         .distinct_leaves = 0.5, .stuck_ball_cost = 0.04, .combinations = 3, .tuned_breaks = true,
          .fresh_deep_draws = true},
     }};
     // clang-format on
@@ -64,6 +64,7 @@ Effort nine_ball_effort(int level) {
         effort.deep_finalists = 32;
         effort.deep_samples = 64;
         effort.deep_halvings = 2;
+        effort.playout_shots = 2;
     }
     return effort;
 }

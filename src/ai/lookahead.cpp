@@ -1,6 +1,7 @@
 #include "ai/lookahead.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <vector>
 
 #include "ai/candidates.hpp"
@@ -9,8 +10,13 @@
 
 namespace ai {
 
-double next_turn_value(const Position& base, const rules::GameState& s, const Effort& effort,
-                       double scale, double sigma_deg, std::int64_t& simulations) {
+namespace {
+
+// The value of `s` to its shooter over his next `shots` shots: his best pot by the one-ply value
+// (as next_turn_value), and where `shots` > 1 the table that pot leaves valued the same way for
+// one shot fewer in place of its one-ply value.
+double turn_value(const Position& base, const rules::GameState& s, const Effort& effort,
+                  double scale, double sigma_deg, std::int64_t& simulations, int shots) {
     auto cue = s.positions.find(0);
     if (cue_in_hand(s) || cue == s.positions.end())
         return position_value(base, s, sigma_deg, effort.stuck_ball_cost);
@@ -25,7 +31,9 @@ double next_turn_value(const Position& base, const rules::GameState& s, const Ef
         aims.resize(static_cast<std::size_t>(second.pot_pairs));
     const Evaluator eval(next, scale, sigma_deg, effort.stuck_ball_cost);
     // Nothing on: a safety keeps the game about even (less what his stuck balls cost him).
-    double best = table_value(0.0) - stuck_penalty(base, s, effort.stuck_ball_cost);
+    const double safe = table_value(0.0) - stuck_penalty(base, s, effort.stuck_ball_cost);
+    double best = safe;
+    std::optional<Candidate> chosen;
     for (const RankedAim& r : aims) {
         // No stroke of this pot, nor of the less likely ones after it, can beat `best`: a
         // stroke is worth at most chance × 1 + (1 − chance) × the miss (the result is the same).
@@ -33,10 +41,29 @@ double next_turn_value(const Position& base, const rules::GameState& s, const Ef
         for (Candidate& c : pot_strokes(next, cue->second, false, r, second, simulations)) {
             const Trial t = eval.nominal(c);
             ++simulations;
-            best = std::max(best, c.prior * t.value + (1.0 - c.prior) * next_miss_value);
+            const double v = c.prior * t.value + (1.0 - c.prior) * next_miss_value;
+            if (v > best) {
+                best = v;
+                chosen = c;
+            }
         }
     }
-    return best;
+    if (shots <= 1 || !chosen) return best;
+    std::optional<rules::GameState> after;
+    eval.nominal_to(*chosen, after);
+    ++simulations;
+    if (!after) return best;  // won, or the turn ends: its one-ply value is exact enough
+    const double on = staying_value(
+        s, *after, turn_value(base, *after, effort, scale, sigma_deg, simulations, shots - 1));
+    return std::max(safe, chosen->prior * on + (1.0 - chosen->prior) * next_miss_value);
+}
+
+}  // namespace
+
+double next_turn_value(const Position& base, const rules::GameState& s, const Effort& effort,
+                       double scale, double sigma_deg, std::int64_t& simulations) {
+    return turn_value(base, s, effort, scale, sigma_deg, simulations,
+                      std::max(effort.playout_shots, 1));
 }
 
 }  // namespace ai

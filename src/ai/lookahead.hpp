@@ -3,7 +3,10 @@
 // weighted by each pot's analytic chance (ghost_ball.hpp). For the finalists of a decision it
 // corrects the one-shot estimate T(q) of table_value.hpp (by the mean difference on the same
 // draws: evaluate.hpp's score_deep): a shot that leaves an easy pot with no way on to the ball
-// after is worth less than one that leaves a route.
+// after is worth less than one that leaves a route. With `Effort::playout_shots` > 1 the second
+// ply is played out: the best next pot, played without noise, leaves a table valued the same
+// way again, for up to that many shots, so an easy pot that leads into a dead end a shot later
+// is seen as one.
 #pragma once
 
 #include <cstdint>
@@ -22,7 +25,9 @@ inline constexpr double next_miss_value = 0.25;
 /// of his next pots, each played once without noise by the rules and valued one ply further,
 /// times its chance, plus the chance of missing times `next_miss_value`; at least the value of a
 /// table with nothing on (he can play safe). `effort`'s pot pairs, speeds and spins are the ones
-/// of the second ply (`Effort::next_*`). Adds the simulations it runs to `simulations`.
+/// of the second ply (`Effort::next_*`). With `effort.playout_shots` = n > 1 the best pot's own
+/// value is that of the table it leaves over n − 1 more shots, found the same way (each further
+/// shot the best by the one-ply value). Adds the simulations it runs to `simulations`.
 double next_turn_value(const Position& base, const rules::GameState& s, const Effort& effort,
                        double scale, double sigma_deg, std::int64_t& simulations);
 

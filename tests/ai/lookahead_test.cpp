@@ -1,6 +1,7 @@
 // The second ply (lookahead.hpp) and the finer search around the best pots (pot_variants): a
 // table with nothing on is worth exactly a safety, a sure game-winning pot nearly a win, a long
-// one less; variants stay near the pot they come from and inside the miscue limit.
+// one less; played out over more shots it sees the win or the dead end a pot leads to; variants
+// stay near the pot they come from and inside the miscue limit.
 #include "ai/lookahead.hpp"
 
 #include <gtest/gtest.h>
@@ -62,6 +63,66 @@ TEST(NextTurnValue, CountsItsSimulations) {
     std::int64_t sims = 0;
     ai::next_turn_value(pos, pos.state, ai::effort_for_level(5), 1.0, sigma, sims);
     EXPECT_GT(sims, 0);
+}
+
+double played_out(const ai::Position& pos, int shots) {
+    std::int64_t sims = 0;
+    ai::Effort effort = ai::for_game(ai::effort_for_level(5), pos.ruleset.game);
+    effort.playout_shots = shots;
+    return ai::next_turn_value(pos, pos.state, effort, 1.0, sigma, sims);
+}
+
+// The 1 straight in to the S side pocket from 0.4 m, the cue ball 0.3 m behind it; the 9 where
+// `nine` says.
+ai::Position one_then_nine(Vec2 nine) {
+    return position(Game::nine_ball, {1, 9}, {{0, {1.27, 0.7}}, {1, {1.27, 0.4}}, {9, nine}});
+}
+
+TEST(PlayOut, OnlyLevelFivePlaysOutFourShotsIn8BallAndTwoIn9Ball) {
+    // Levels 1-4 keep the second ply (the next shot only); level 5 follows 4 shots in 8-ball (the
+    // end of the rack's effort too) and 2 in 9-ball, whose deeper search costs more per shot.
+    for (int level = ai::min_level; level < ai::max_level; ++level) {
+        EXPECT_EQ(ai::effort_for_level(level).playout_shots, 1) << "level " << level;
+        EXPECT_EQ(ai::nine_ball_effort(level).playout_shots, 1) << "level " << level;
+        EXPECT_EQ(ai::rack_end_effort(level).playout_shots, 1) << "level " << level;
+    }
+    EXPECT_EQ(ai::for_game(ai::effort_for_level(ai::max_level), Game::eight_ball).playout_shots, 4);
+    EXPECT_EQ(ai::for_game(ai::rack_end_effort(ai::max_level), Game::eight_ball).playout_shots, 4);
+    EXPECT_EQ(ai::for_game(ai::nine_ball_effort(ai::max_level), Game::nine_ball).playout_shots, 2);
+    // And the table's value at level 5 is the played-out one.
+    const ai::Position pos = one_then_nine({2.3, 0.25});
+    EXPECT_EQ(value_of(pos), played_out(pos, 4));
+}
+
+TEST(PlayOut, SeesTheWinAnEasyFinishLeads) {
+    // After the 1 the 9 is an easy pot: played out, the table is worth about the chance of both
+    // pots (a win), more than the one-shot estimate T(q) of the table the 1 leaves.
+    const ai::Position pos = one_then_nine({2.3, 0.25});
+    const double one = played_out(pos, 1), two = played_out(pos, 2);
+    EXPECT_GT(two, one);
+    EXPECT_GT(two, 0.9);
+    EXPECT_LE(two, 1.0);
+    EXPECT_EQ(played_out(pos, 8), two);  // the game ends at the 9: no shot beyond it to play
+}
+
+TEST(PlayOut, SeesTheDeadEndTheNextEasyPotLeadsTo) {
+    // The 2 is as easy after the 1 as the 9 is above, but the 3 after it is boxed in by four
+    // balls: played out two shots, the table is worth less than its one-shot estimate (the
+    // shooter pots the 1 and the 2 and then has nothing on), and no less than a safety now.
+    const Vec2 three{0.8, 0.9};
+    const double g = 2.0 * 0.028575 + 1e-4;
+    const ai::Position pos = position(Game::nine_ball, {1, 2, 3, 4, 5, 6, 9},
+                                      {{0, {1.27, 0.7}},
+                                       {1, {1.27, 0.4}},
+                                       {2, {2.3, 0.25}},
+                                       {3, three},
+                                       {4, three + Vec2{g, 0}},
+                                       {5, three + Vec2{-g, 0}},
+                                       {6, three + Vec2{0, g}},
+                                       {9, three + Vec2{0, -g}}});
+    const double one = played_out(pos, 1), three_shots = played_out(pos, 3);
+    EXPECT_LT(three_shots, one - 0.05);
+    EXPECT_GE(three_shots, ai::table_value(0.0));
 }
 
 TEST(PotVariants, StayNearThePotAndInsideTheMiscueLimit) {
