@@ -64,7 +64,7 @@ Effort nine_ball_effort(int level) {
         effort.deep_finalists = 32;
         effort.deep_samples = 64;
         effort.deep_halvings = 2;
-        effort.playout_shots = 2;
+        effort.playout_shots = 1;
     }
     return effort;
 }

@@ -40,7 +40,7 @@ struct Effort {
     int next_spins = 3;    ///< second ply: spins per aim
     /// The second ply played out: how many of the shooter's next shots it follows, each the
     /// best of its pots by the one-ply value, without noise (1: the next shot only). Level 5
-    /// follows 4 in 8-ball, 2 in 9-ball (`nine_ball_effort`; docs/ai.md, stops 24 and 25).
+    /// follows 4 in 8-ball; 9-ball keeps 1 (`nine_ball_effort`; docs/ai.md, stops 24 and 25).
     int playout_shots = 1;
     int refine_steps = 2;  ///< secant steps of the heading refinement (aim.hpp) per pot
     /// 8-ball: of the shortlist, the finalists and the deep finalists, up to this share goes
@@ -86,9 +86,9 @@ Effort rack_end_effort(int level);
 /// The effort of `level` in 9-ball (the planner's choice for every 9-ball decision): level 5
 /// searches deeper there (8 pots searched finer instead of 4; 32 deep finalists instead of 8,
 /// in two halvings: 32 draws each, 32 more for the better 16, 64 more for the best 8), where
-/// each decision has few candidates (one target ball) and the second ply decides, and plays the
-/// second ply out over 2 shots rather than 4 (the deeper search costs more per shot followed);
-/// other levels as elsewhere. docs/ai.md, stops 19, 20, 22 and 25.
+/// each decision has few candidates (one target ball) and the second ply decides, but does not
+/// play the second ply out (2 shots gained no more than noise there, for twice the time); other
+/// levels as elsewhere. docs/ai.md, stops 19, 20, 22 and 25.
 Effort nine_ball_effort(int level);
 
 /// `effort` for a game of `game`: the 8-ball-only parts (distinct leaves, the stuck-ball cost)

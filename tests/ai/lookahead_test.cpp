@@ -78,9 +78,9 @@ ai::Position one_then_nine(Vec2 nine) {
     return position(Game::nine_ball, {1, 9}, {{0, {1.27, 0.7}}, {1, {1.27, 0.4}}, {9, nine}});
 }
 
-TEST(PlayOut, OnlyLevelFivePlaysOutFourShotsIn8BallAndTwoIn9Ball) {
+TEST(PlayOut, OnlyLevelFivePlaysOutFourShotsAndOnlyIn8Ball) {
     // Levels 1-4 keep the second ply (the next shot only); level 5 follows 4 shots in 8-ball (the
-    // end of the rack's effort too) and 2 in 9-ball, whose deeper search costs more per shot.
+    // end of the rack's effort too); 9-ball, whose deeper search costs more per shot, does not.
     for (int level = ai::min_level; level < ai::max_level; ++level) {
         EXPECT_EQ(ai::effort_for_level(level).playout_shots, 1) << "level " << level;
         EXPECT_EQ(ai::nine_ball_effort(level).playout_shots, 1) << "level " << level;
@@ -88,7 +88,7 @@ TEST(PlayOut, OnlyLevelFivePlaysOutFourShotsIn8BallAndTwoIn9Ball) {
     }
     EXPECT_EQ(ai::for_game(ai::effort_for_level(ai::max_level), Game::eight_ball).playout_shots, 4);
     EXPECT_EQ(ai::for_game(ai::rack_end_effort(ai::max_level), Game::eight_ball).playout_shots, 4);
-    EXPECT_EQ(ai::for_game(ai::nine_ball_effort(ai::max_level), Game::nine_ball).playout_shots, 2);
+    EXPECT_EQ(ai::for_game(ai::nine_ball_effort(ai::max_level), Game::nine_ball).playout_shots, 1);
     // And the table's value at level 5 is the played-out one.
     const ai::Position pos = one_then_nine({2.3, 0.25});
     EXPECT_EQ(value_of(pos), played_out(pos, 4));
