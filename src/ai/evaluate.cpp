@@ -1,10 +1,13 @@
 #include "ai/evaluate.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 
 #include "ai/ghost_ball.hpp"
 #include "ai/lookahead.hpp"
 #include "ai/parallel.hpp"
+#include "ai/quasi_random.hpp"
 #include "ai/table_value.hpp"
 #include "game/session.hpp"
 #include "game/stroke_noise.hpp"
@@ -35,14 +38,21 @@ rules::Call call_from_events(const Position& pos, const std::vector<physics::Eve
 }  // namespace
 
 std::vector<NoiseDraw> noise_draws(std::uint64_t seed, int n) {
+    // A Halton sequence shifted by a seeded uniform per component (quasi_random.hpp): heading
+    // in base 2, whose every prefix covers its distribution most evenly, then speed, side, top
+    // and elevation, the order of what they change.
+    constexpr std::array<std::uint64_t, 5> bases{2, 3, 5, 7, 11};
     physics::SplitMix64 rng(seed);
+    std::array<double, 5> shift{};
+    for (double& x : shift) x = rng.uniform();
     std::vector<NoiseDraw> draws(static_cast<std::size_t>(std::max(n, 0)));
-    for (NoiseDraw& d : draws) {
-        d.heading = game::standard_normal(rng);
-        d.elevation = game::standard_normal(rng);
-        d.speed = game::standard_normal(rng);
-        d.side = game::standard_normal(rng);
-        d.top = game::standard_normal(rng);
+    for (std::size_t i = 0; i < draws.size(); ++i) {
+        std::array<double, 5> z{};
+        for (std::size_t k = 0; k < bases.size(); ++k) {
+            double u = radical_inverse(i, bases[k]) + shift[k];
+            z[k] = normal_quantile(u - std::floor(u));
+        }
+        draws[i] = {.heading = z[0], .elevation = z[4], .speed = z[1], .side = z[2], .top = z[3]};
     }
     return draws;
 }

@@ -20,7 +20,9 @@ struct NoiseDraw {
     double heading = 0.0, elevation = 0.0, speed = 0.0, side = 0.0, top = 0.0;
 };
 
-/// `n` draws from a stream seeded with `seed` (the AI's own; it never sees the game's).
+/// `n` draws from `seed` (the AI's own; it never sees the game's stream): quasi-random
+/// (quasi_random.hpp), so that every run of the first k draws covers the normal distribution of
+/// each component evenly.
 std::vector<NoiseDraw> noise_draws(std::uint64_t seed, int n);
 
 /// The stroke with the draw's errors at `scale` × the standard σ (game/stroke_noise.hpp), kept
