@@ -1,10 +1,13 @@
 // The AI's strength benchmark (docs/ai.md): not a test, a measurement.
 //   ai_strength shots   [--n N] [--level L] [--noise X] [--seed S]   cue ball + one object ball
 //   ai_strength runouts [--n N] [--level L] [--noise X] [--seed S] [--game 8ball|9ball]
-//                       [--paired 1] [--from F]
+//                       [--paired 1] [--from F] [--cue-endmass KG]
 //     --paired 1: each rack its own noise and decision streams, and "rack I 0|1" on stderr, so
 //     that two arms of a tuning run play the same racks (until their decisions differ) and
 //     can be compared rack by rack; --from F starts at rack F (to split a run over cores).
+//     --cue-endmass KG: the cue's effective end mass (physics::Params, default 0.015): the
+//     squirt that the tip-offset noise causes; 1e-9 plays as a simulator without squirt
+//     (the Computer Olympiad's). The racks do not depend on it.
 // Prints one JSON object: counts, rates with 95 % Wilson intervals, time per decision (median,
 // p95) and simulations per decision. Ladder games go through `coolaaber-cli match --duplicate`.
 #include <algorithm>
@@ -37,6 +40,7 @@ struct Args {
     std::string game = "8ball";
     bool paired = false;  // runouts: each rack its own noise and decision streams
     int from = 0;         // runouts: the first rack's index
+    double cue_endmass = physics::Params{}.cue_endmass;  // (unit: kg)
 };
 
 struct Interval {
@@ -74,9 +78,10 @@ struct Timing {
     }
 };
 
-ai::Position base_position(rules::Game game) {
+ai::Position base_position(rules::Game game, double cue_endmass) {
     ai::Position p;
     p.ruleset.game = game;
+    p.params.cue_endmass = cue_endmass;
     p.table = physics::build_table(physics::TableSpec{});
     p.state = rules::initial_state(game, rules::Player::A);
     return p;
@@ -87,16 +92,16 @@ ai::Position base_position(rules::Game game) {
 // AI_VERBOSE_LAYOUT=1 also every ball's position and player A's group.
 void print_shot(const ai::Position& pos, const ai::Plan& plan, const rules::GameState& s,
                 const physics::Stroke& stroke, const rules::Verdict& v) {
+    const double sigma = ai::heading_sigma_deg(pos.params);
     rules::GameState anywhere = pos.state;  // the same table with the cue ball in hand
     anywhere.cue_ball = rules::CueBall::in_hand;
     anywhere.positions.erase(0);
-    std::fprintf(stderr, "in_hand_q %.2f ",
-                 ai::best_shot_chance(pos, anywhere, ai::heading_sigma_deg));
+    std::fprintf(stderr, "in_hand_q %.2f ", ai::best_shot_chance(pos, anywhere, sigma));
     if (std::getenv("AI_VERBOSE_LAYOUT")) {
         std::fprintf(stderr, "anywhere");
         for (int ball : pos.state.on_table)
             std::fprintf(stderr, " %d:%.3f", ball,
-                         ai::ball_chance_anywhere(pos, anywhere, ball, ai::heading_sigma_deg));
+                         ai::ball_chance_anywhere(pos, anywhere, ball, sigma));
         std::fprintf(stderr, " layout");
         for (const auto& [id, p] : pos.state.positions)
             std::fprintf(stderr, " %d:%.4f,%.4f", id, p.x, p.y);
@@ -106,10 +111,9 @@ void print_shot(const ai::Position& pos, const ai::Plan& plan, const rules::Game
     std::fprintf(stderr,
                  "q %.2f kind %d balls %zu call %d/%d speed %.2f side %.2f top %.2f exp %.2f "
                  "value %.3f sims %lld -> foul %d next %d over %d\n",
-                 ai::best_shot_chance(pos, pos.state, ai::heading_sigma_deg),
-                 static_cast<int>(plan.kind), pos.state.on_table.size(), s.call.ball,
-                 s.call.pocket, stroke.speed, stroke.side, stroke.top, plan.expected_success,
-                 plan.expected_value,
+                 ai::best_shot_chance(pos, pos.state, sigma), static_cast<int>(plan.kind),
+                 pos.state.on_table.size(), s.call.ball, s.call.pocket, stroke.speed, stroke.side,
+                 stroke.top, plan.expected_success, plan.expected_value,
                  static_cast<long long>(plan.simulations), v.foul ? 1 : 0,
                  v.next_shooter ? static_cast<int>(*v.next_shooter) : -1, v.game_over ? 1 : 0);
 }
@@ -147,12 +151,12 @@ void shots(const Args& a) {
     std::vector<int> made(5, 0), tried(5, 0);
     Timing timing;
     for (int i = 0; i < a.n; ++i) {
-        ai::Position pos = base_position(rules::Game::nine_ball);
+        ai::Position pos = base_position(rules::Game::nine_ball, a.cue_endmass);
         pos.state.shot = rules::Shot::normal;
         pos.state.cue_ball = rules::CueBall::on_table;
         pos.state.on_table = {9};
         pos.state.positions = bench::two_ball_layout(pos.table, pos.params.ball_radius, rng);
-        const double q = ai::best_shot_chance(pos, pos.state, ai::heading_sigma_deg);
+        const double q = ai::best_shot_chance(pos, pos.state, ai::heading_sigma_deg(pos.params));
         const int bin = std::clamp(static_cast<int>((1.0 - q) * 5.0), 0, 4);  // 0: easiest
         const Played p = play(pos, settings, a.seed * 7919 + static_cast<std::uint64_t>(i),
                               noise_rng, timing);
@@ -194,7 +198,7 @@ void runouts(const Args& a) {
             noise_rng = physics::SplitMix64(a.seed * 7919ULL + static_cast<std::uint64_t>(i));
             decision = static_cast<std::uint64_t>(i) * 1000ULL;
         }
-        ai::Position pos = base_position(game);
+        ai::Position pos = base_position(game, a.cue_endmass);
         const std::vector<physics::BallState> balls = physics::rack(
             game == rules::Game::eight_ball ? physics::RackType::eight_ball
                                             : physics::RackType::nine_ball,
@@ -250,16 +254,23 @@ int main(int argc, char** argv) {
         else if (k == "--game") a.game = v;
         else if (k == "--paired") a.paired = v == "1";
         else if (k == "--from") a.from = std::atoi(v.c_str());
+        else if (k == "--cue-endmass") a.cue_endmass = std::atof(v.c_str());
         else {
             std::fprintf(stderr, "unknown option %s\n", k.c_str());
             return 2;
         }
     }
+    if (!(a.cue_endmass > 0.0 && a.cue_endmass <= 100.0)) {
+        std::fprintf(stderr, "--cue-endmass: must be a mass in kg above 0 and at most 100 "
+                             "(e.g. 0.015, or 1e-9 for no squirt)\n");
+        return 2;
+    }
     if (a.mode == "shots") shots(a);
     else if (a.mode == "runouts") runouts(a);
     else {
         std::fprintf(stderr, "usage: ai_strength shots|runouts [--n N] [--level L] [--noise X] "
-                             "[--seed S] [--game 8ball|9ball] [--paired 1] [--from F]\n");
+                             "[--seed S] [--game 8ball|9ball] [--paired 1] [--from F] "
+                             "[--cue-endmass KG]\n");
         return 2;
     }
     return 0;

@@ -109,7 +109,7 @@ void play_pots(const ai::Position& pos, const Args& a, const std::vector<ai::Noi
     std::int64_t simulations = 0;
     const physics::Vec2 cue = pos.state.positions.at(0);
     const std::vector<physics::BallState> balls = ai::layout(pos.state, cue);
-    for (const ai::RankedAim& r : ai::ranked_aims(pos, cue, ai::heading_sigma_deg)) {
+    for (const ai::RankedAim& r : ai::ranked_aims(pos, cue, ai::heading_sigma_deg(pos.params))) {
         if (a.pockets != "all" && is_side(r.aim.pocket) != (a.pockets == "side")) continue;
         for (const ai::Candidate& c : ai::pot_strokes(pos, cue, false, r, effort, simulations)) {
             Row row{r.aim};
@@ -145,11 +145,13 @@ void dump(const std::string& path, const std::vector<Row>& rows) {
 }
 
 void report(const Args& a, const std::vector<Row>& rows) {
-    const double R = physics::Params{}.ball_radius;
+    const physics::Params params;
+    const double R = params.ball_radius;
+    const double model_sigma = ai::heading_sigma_deg(params);
     std::vector<double> model(10, 0.0), engine(10, 0.0);
     std::vector<int> count(10, 0);
     for (const Row& r : rows) {
-        const double q = ai::aim_chance(r.aim, R, ai::heading_sigma_deg * a.noise);
+        const double q = ai::aim_chance(r.aim, R, model_sigma * a.noise);
         const auto b = static_cast<std::size_t>(std::clamp(static_cast<int>(q * 10.0), 0, 9));
         model[b] += q;
         engine[b] += static_cast<double>(r.potted) / r.played;
@@ -177,7 +179,7 @@ void report(const Args& a, const std::vector<Row>& rows) {
         std::printf("%s{\"sigma_deg\": %.3f, \"value\": %.1f}", k ? ", " : "", sigma, ll);
     }
     std::printf("], \"best_sigma_deg\": %.3f, \"model_sigma_deg\": %.3f}\n", best_sigma,
-                ai::heading_sigma_deg);
+                model_sigma);
 }
 
 }  // namespace

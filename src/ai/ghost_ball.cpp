@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "game/stroke_noise.hpp"
+#include "physics/cue_strike.hpp"
+
 namespace ai {
 
 namespace {
@@ -155,6 +158,12 @@ double combination_chance(const Combination& c, double radius, double sigma_deg)
     // The second contact throws the second ball by a little that no refinement corrects.
     const double thin = 1.0 - 0.25 * std::pow(c.second.cut_deg / max_combination_cut_deg, 2.0);
     return aim_chance(c.first, radius, sigma_deg) * thin;
+}
+
+double heading_sigma_deg(const physics::Params& params) {
+    const game::StrokeNoise sigma;
+    const double squirt_deg = physics::squirt_per_side_offset(params) * sigma.offset / deg;
+    return std::hypot(sigma.heading_deg, squirt_deg);
 }
 
 double aim_chance(const Aim& a, double radius, double sigma_deg) {

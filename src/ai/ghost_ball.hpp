@@ -9,6 +9,7 @@
 #include <map>
 #include <optional>
 
+#include "physics/params.hpp"
 #include "physics/table.hpp"
 #include "physics/vec.hpp"
 
@@ -28,9 +29,10 @@ struct Aim {
     double tolerance = 0.0;       ///< half-angle of the pocket seen from the object ball (unit: rad)
 };
 
-/// Effective σ of the cue ball's heading at execution-noise scale 1: the model's heading σ with
-/// the squirt of the tip-offset σ (0.125° and about 0.17°) (unit: deg).
-inline constexpr double heading_sigma_deg = 0.21;
+/// Effective σ of the cue ball's heading at execution-noise scale 1: the noise model's heading σ
+/// combined with the squirt that its side-offset σ causes with this cue (0.125° and 0.169° with
+/// the default cue's 15 g end mass: 0.210°) (unit: deg).
+double heading_sigma_deg(const physics::Params& params);
 /// The least σ the shot model assumes (a noiseless player still prefers easy shots) (unit: deg).
 inline constexpr double min_model_sigma_deg = 0.08;
 

@@ -184,7 +184,7 @@ double planned_scale(const PlanSettings& settings) {
 Plan plan(const Position& pos, const PlanSettings& settings, std::uint64_t seed) {
     const Effort effort = effort_for(pos, settings.level);
     const double scale = planned_scale(settings);
-    const double sigma_deg = heading_sigma_deg * scale;
+    const double sigma_deg = heading_sigma_deg(pos.params) * scale;
     if (pos.choice) return plan_choice(pos, sigma_deg, effort.stuck_ball_cost);
 
     Search s{pos, effort, Evaluator(pos, scale, sigma_deg, effort.stuck_ball_cost),

@@ -43,6 +43,10 @@ StrikeResult strike(const Params& p, const Stroke& st) {
     return out;
 }
 
+double squirt_per_side_offset(const Params& p) {
+    return 2.5 / (1.0 + p.ball_mass / p.cue_endmass + 2.5);
+}
+
 double cue_speed_for_ball_speed(const Params& p, double ball_speed) {
     return ball_speed * (1.0 + p.ball_mass / p.cue_mass) / (1.0 + p.cue_tip_e);
 }

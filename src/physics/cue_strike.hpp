@@ -16,6 +16,11 @@ struct StrikeResult {
 
 StrikeResult strike(const Params& params, const Stroke& stroke);
 
+/// The squirt's rate of change with the side offset at a centre hit (TP A.31 at small offsets):
+/// a side offset `a` (fraction of R) near 0 sends the cue ball off the stroke line by about
+/// `a` times this (unit: rad per unit of offset).
+double squirt_per_side_offset(const Params& params);
+
 /// The cue speed that gives a centre-hit cue ball the speed `ball_speed` (inverse of TP A.30).
 double cue_speed_for_ball_speed(const Params& params, double ball_speed);
 

@@ -19,6 +19,7 @@ using physics::Vec2;
 using rules::Game;
 
 constexpr int SW = static_cast<int>(physics::PocketId::SW);
+const double sigma = ai::heading_sigma_deg(physics::Params{});  // the shot model's σ at 1×
 
 // The 9 on the diagonal to the SW corner, the 2 behind it on the same line, the cue ball
 // behind the 2: a straight combination. The 3 is on the table too.
@@ -39,7 +40,7 @@ TEST(CombinationAim, FindsTheStraightCombinationAndItIsHarderThanAPot) {
     EXPECT_LT(c->second.cut_deg, 1.0);
     // The first ball is sent to where it meets the 9: its ghost ball.
     EXPECT_NEAR(physics::norm(c->first.aim_point - pos.state.positions.at(9)), 2.0 * R, 1e-9);
-    const double q = ai::combination_chance(*c, R, ai::heading_sigma_deg);
+    const double q = ai::combination_chance(*c, R, sigma);
     EXPECT_GT(q, 0.3);
     EXPECT_LT(q, 1.0);
     // The 9 potted from the first ball's spot instead (one contact less) is easier.
@@ -47,7 +48,7 @@ TEST(CombinationAim, FindsTheStraightCombinationAndItIsHarderThanAPot) {
         pos.table, R, pos.state.positions.at(2), 9, SW,
         {{3, pos.state.positions.at(3)}, {9, pos.state.positions.at(9)}});
     ASSERT_TRUE(direct.has_value());
-    EXPECT_GT(ai::aim_chance(*direct, R, ai::heading_sigma_deg), q);
+    EXPECT_GT(ai::aim_chance(*direct, R, sigma), q);
 }
 
 TEST(CombinationAim, RefusesABlockedPathOrASteepCut) {
@@ -70,13 +71,13 @@ TEST(CombinationAim, RefusesABlockedPathOrASteepCut) {
 TEST(CombinationCandidates, TheRefinedStrokesPotTheNineWithoutNoise) {
     const ai::Position pos = straight_combination();
     const std::vector<ai::RankedCombination> ranked =
-        ai::ranked_combinations(pos, pos.state.positions.at(0), ai::heading_sigma_deg);
+        ai::ranked_combinations(pos, pos.state.positions.at(0), sigma);
     ASSERT_FALSE(ranked.empty());
     EXPECT_EQ(ranked.front().combination.second.pocket, SW);
     const ai::Effort effort = ai::effort_for_level(ai::max_level);
     std::int64_t sims = 0;
-    const std::vector<ai::Candidate> strokes = ai::combination_candidates(
-        pos, pos.state.positions.at(0), false, effort, ai::heading_sigma_deg, sims);
+    const std::vector<ai::Candidate> strokes =
+        ai::combination_candidates(pos, pos.state.positions.at(0), false, effort, sigma, sims);
     ASSERT_FALSE(strokes.empty());
     EXPECT_GT(sims, 0);
     int stun = 0;
@@ -97,16 +98,16 @@ TEST(CombinationCandidates, NoneInEightBallOrWhenTheNineIsTheLowest) {
     ai::Position eight = straight_combination();
     eight.ruleset.game = Game::eight_ball;
     eight.state.group_a = rules::Group::solids;
-    EXPECT_TRUE(ai::ranked_combinations(eight, {0.95, 0.95}, ai::heading_sigma_deg).empty());
+    EXPECT_TRUE(ai::ranked_combinations(eight, {0.95, 0.95}, sigma).empty());
     ai::Position nine = position(Game::nine_ball, {9}, {{0, {0.95, 0.95}}, {9, {0.25, 0.25}}});
-    EXPECT_TRUE(ai::ranked_combinations(nine, {0.95, 0.95}, ai::heading_sigma_deg).empty());
+    EXPECT_TRUE(ai::ranked_combinations(nine, {0.95, 0.95}, sigma).empty());
     // Levels below 5 try none, nor level 5 in 8-ball.
     EXPECT_EQ(ai::for_game(ai::effort_for_level(ai::max_level), Game::eight_ball).combinations, 0);
     std::int64_t sims = 0;
     const ai::Position pos = straight_combination();
-    EXPECT_TRUE(ai::combination_candidates(pos, {0.95, 0.95}, false, ai::effort_for_level(4),
-                                           ai::heading_sigma_deg, sims)
-                    .empty());
+    EXPECT_TRUE(
+        ai::combination_candidates(pos, {0.95, 0.95}, false, ai::effort_for_level(4), sigma, sims)
+            .empty());
 }
 
 TEST(CombinationSpots, BallInHandFindsASpotForTheCombination) {
@@ -114,14 +115,13 @@ TEST(CombinationSpots, BallInHandFindsASpotForTheCombination) {
     pos.state.positions.erase(0);
     pos.state.cue_ball = rules::CueBall::in_hand;
     const double R = pos.params.ball_radius;
-    const std::vector<Vec2> spots =
-        ai::combination_spots(pos, 2, ai::heading_sigma_deg, 0.3);
+    const std::vector<Vec2> spots = ai::combination_spots(pos, 2, sigma, 0.3);
     ASSERT_FALSE(spots.empty());
     EXPECT_TRUE(ai::free_spot(pos, spots.front()));
     const std::optional<ai::Combination> c =
         ai::combination_aim(pos.table, R, spots.front(), 2, 9, SW, pos.state.positions);
     ASSERT_TRUE(c.has_value());
-    EXPECT_GE(ai::combination_chance(*c, R, ai::heading_sigma_deg), 0.3);
+    EXPECT_GE(ai::combination_chance(*c, R, sigma), 0.3);
 }
 
 TEST(Planner, LevelFiveWinsWithTheCombinationWhereAPotWouldNot) {

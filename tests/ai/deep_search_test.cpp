@@ -20,7 +20,7 @@ using ai_test::position;
 using physics::Vec2;
 using rules::Game;
 
-constexpr double sigma = 0.21;  // heading σ of the shot model at 1× (ai::heading_sigma_deg)
+constexpr double sigma = 0.21;  // the shot model's heading σ at 1×, default cue (heading_sigma_deg)
 
 // The 1 half a metre from the NE corner's mouth, the cue ball behind it, the 9 further up the
 // table: the shooter stays at the table after most draws, so the second ply values them.

@@ -19,7 +19,7 @@ using ai_test::position;
 using physics::Vec2;
 using rules::Game;
 
-constexpr double sigma = 0.21;  // heading σ of the shot model at 1× (ai::heading_sigma_deg)
+constexpr double sigma = 0.21;  // the shot model's heading σ at 1×, default cue (heading_sigma_deg)
 
 double value_of(const ai::Position& pos) {
     std::int64_t sims = 0;

@@ -16,7 +16,7 @@ using ai_test::position;
 using physics::Vec2;
 using rules::Game;
 
-constexpr double sigma = 0.21;  // heading σ of the shot model at 1× (ai::heading_sigma_deg)
+constexpr double sigma = 0.21;  // the shot model's heading σ at 1×, default cue (heading_sigma_deg)
 constexpr double gap = 2.0 * 0.028575 + 1e-4;  // two ball radii and a tenth of a millimetre
 
 // 8-ball, player A on stripes: the 9 boxed in by the solids 1–4 at the table's centre, the 8

@@ -133,6 +133,23 @@ TEST(Strike, SquirtDeflectsAwayFromTheTip) {
     EXPECT_LT(at_half, 8.0);
 }
 
+// The squirt's slope at a centre hit is the limit of TP A.31's angle over the offset, and grows
+// with the cue's end mass (no end mass, no squirt).
+TEST(Strike, SquirtPerSideOffsetIsTheSlopeAtACentreHit) {
+    for (double end_mass : {0.001, 0.015, 0.03}) {
+        Params p;
+        p.cue_endmass = end_mass;
+        const double a = 1e-5;
+        const double slope = strike(p, stroke(3.0, 0.0, a, 0.0)).squirt_deg * kDeg / a;
+        EXPECT_REL(squirt_per_side_offset(p), slope, 1e-8);
+    }
+    Params light = kP, heavy = kP;
+    light.cue_endmass = 1e-9;
+    heavy.cue_endmass = 2.0 * kP.cue_endmass;
+    EXPECT_LT(squirt_per_side_offset(light), 1e-6);
+    EXPECT_GT(squirt_per_side_offset(heavy), 1.5 * squirt_per_side_offset(kP));
+}
+
 // An offset beyond miscue_limit is a miscue, reported as the first event.
 TEST(Strike, MiscueBeyondTheLimit) {
     const Table table = unbounded_table();
