@@ -16,16 +16,16 @@ physics::Params with_end_mass(double kg) {
     return p;
 }
 
-TEST(ShotModel, HeadingSigmaOfTheDefaultCueIsTheDocumentedValue) {
+TEST(HeadingSigma, OfTheDefaultCueIsTheDocumentedValue) {
     EXPECT_NEAR(ai::heading_sigma_deg(physics::Params{}), 0.210, 0.001);
 }
 
-TEST(ShotModel, WithoutSquirtTheHeadingSigmaIsTheNoiseModels) {
+TEST(HeadingSigma, WithoutSquirtIsTheNoiseModels) {
     EXPECT_NEAR(ai::heading_sigma_deg(with_end_mass(1e-9)), game::StrokeNoise{}.heading_deg, 1e-6);
 }
 
 // The squirt part is what the strike gives a side offset of one σ, for light and heavy cues.
-TEST(ShotModel, TheSquirtPartIsTheStrikesSquirtAtOneSigmaOfSideOffset) {
+TEST(HeadingSigma, TheSquirtPartIsTheStrikesSquirtAtOneSigmaOfSideOffset) {
     const game::StrokeNoise sigma;
     double previous = 0.0;
     for (double kg : {0.005, 0.015, 0.03}) {
