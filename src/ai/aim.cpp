@@ -5,6 +5,7 @@
 #include <cmath>
 #include <optional>
 
+#include "game/stroke_noise.hpp"
 #include "physics/simulate.hpp"
 
 namespace ai {
@@ -73,6 +74,46 @@ double refine_heading(const physics::Table& table, const physics::Params& params
         stroke.heading_deg = h;
         return direction_error(table, params, balls, aim.ball, aim.object_dir, stroke, 10);
     });
+}
+
+double compensating_elevation(const physics::Table& table, const physics::Params& params,
+                              physics::Vec2 cue, physics::Vec2 object, const Aim& aim,
+                              physics::Stroke stroke, double max_deg, std::int64_t& simulations) {
+    const double side_step = game::StrokeNoise{}.offset;  // one σ of the tip offset (unit: R)
+    constexpr double first_try = 12.0;                      // (unit: deg)
+    std::array<physics::BallState, 2> balls{};
+    balls[0].pos = cue;
+    balls[1].id = aim.ball;
+    balls[1].pos = object;
+    const double side = stroke.side;
+    // How much the object ball's direction turns from a side error of −step to +step.
+    const auto sensitivity = [&](double elevation) -> std::optional<double> {
+        stroke.elevation_deg = elevation;
+        simulations += 2;
+        stroke.side = side + side_step;
+        const std::optional<double> plus =
+            direction_error(table, params, balls, aim.ball, aim.object_dir, stroke, 10);
+        stroke.side = side - side_step;
+        const std::optional<double> minus =
+            direction_error(table, params, balls, aim.ball, aim.object_dir, stroke, 10);
+        if (!plus || !minus) return std::nullopt;
+        return *plus - *minus;
+    };
+    double e0 = 0.0, e1 = std::min(first_try, max_deg);
+    std::optional<double> s0 = sensitivity(e0), s1 = sensitivity(e1);
+    if (!s0 || !s1 || std::fabs(*s1) >= std::fabs(*s0)) return 0.0;
+    for (int k = 0; k < 2; ++k) {
+        if (*s1 == *s0) break;
+        const double e2 = std::clamp(e1 - *s1 * (e1 - e0) / (*s1 - *s0), 0.0, max_deg);
+        if (std::fabs(e2 - e1) < 0.25) return e2;
+        const std::optional<double> s2 = sensitivity(e2);
+        if (!s2) break;
+        e0 = e1;
+        s0 = s1;
+        e1 = e2;
+        s1 = s2;
+    }
+    return e1;
 }
 
 double refine_combination_heading(const physics::Table& table, const physics::Params& params,

@@ -21,6 +21,18 @@ double refine_heading(const physics::Table& table, const physics::Params& params
                       physics::Vec2 cue, physics::Vec2 object, const Aim& aim,
                       physics::Stroke stroke, int iterations, std::int64_t& simulations);
 
+/// The cue's elevation (unit: deg, 0 to `max_deg`) at which the object ball of `aim` leaves
+/// along the same line whatever small error the side offset of `stroke` has (cue ball and object
+/// ball alone, as above; `stroke` without side spin meant, since side spin would curve its path
+/// on a raised cue). On a level cue a side error squirts the cue ball off the stroke line; on a
+/// raised one the side spin it gives also curves the cue ball back (swerve), the more the higher
+/// the cue and the slower and longer the shot, and the spin throws the object ball a little. The
+/// secant method finds where they cancel; where they cannot within `max_deg`, `max_deg`. 0 when
+/// raising the cue does not help. Adds its simulations.
+double compensating_elevation(const physics::Table& table, const physics::Params& params,
+                              physics::Vec2 cue, physics::Vec2 object, const Aim& aim,
+                              physics::Stroke stroke, double max_deg, std::int64_t& simulations);
+
 /// The same for a combination (cue ball, `c.first` and `c.second` alone on the table, where
 /// `balls` has them): the heading that sends `c.second` along `c.second.object_dir`.
 double refine_combination_heading(const physics::Table& table, const physics::Params& params,

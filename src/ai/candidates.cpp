@@ -67,6 +67,23 @@ double base_combination_speed(const physics::Params& params, const Combination& 
     return physics::cue_speed_for_ball_speed(params, cue0);
 }
 
+// Raises the cue of the pot `stroke` (its heading refined on a level cue) so that a side-offset
+// error's swerve cancels its squirt, keeps the ball's speed (an elevated cue drives the ball
+// into the cloth by sin ε of the impulse) and refines the heading again. Not with side spin
+// meant: on a raised cue that spin curves the ball by an amount the speed's error changes.
+void raise_cue(const Position& pos, Vec2 cue, Vec2 object, const Aim& aim, const Effort& effort,
+               physics::Stroke& stroke, std::int64_t& simulations) {
+    if (effort.max_raise_deg <= 0.0 || stroke.side != 0.0) return;
+    const double e = compensating_elevation(pos.table, pos.params, cue, object, aim, stroke,
+                                            effort.max_raise_deg, simulations);
+    if (e == stroke.elevation_deg) return;
+    const double ball_speed = stroke.speed * std::cos(stroke.elevation_deg * deg);
+    stroke.speed = std::clamp(ball_speed / std::cos(e * deg), min_speed, max_speed);
+    stroke.elevation_deg = e;
+    stroke.heading_deg = refine_heading(pos.table, pos.params, cue, object, aim, stroke,
+                                        effort.refine_steps, simulations);
+}
+
 double heading_to(Vec2 from, Vec2 to) {
     return std::atan2(to.y - from.y, to.x - from.x) / deg;
 }
@@ -124,6 +141,7 @@ std::vector<Candidate> pot_strokes(const Position& pos, Vec2 cue, bool in_hand, 
             c.stroke.top = spins[static_cast<std::size_t>(j)].top;
             c.stroke.heading_deg = refine_heading(pos.table, pos.params, cue, object, r.aim,
                                                   c.stroke, effort.refine_steps, simulations);
+            raise_cue(pos, cue, object, r.aim, effort, c.stroke, simulations);
             out.push_back(c);
         }
     return out;
@@ -135,9 +153,11 @@ std::vector<Candidate> pot_candidates(const Position& pos, Vec2 cue, bool in_han
     std::vector<RankedAim> aims = ranked_aims(pos, cue, sigma_deg);
     if (aims.size() > static_cast<std::size_t>(effort.pot_pairs))
         aims.resize(static_cast<std::size_t>(effort.pot_pairs));
+    Effort pots = effort;
+    if (sigma_deg == 0.0) pots.max_raise_deg = 0.0;  // without noise a level cue is exact
     std::vector<Candidate> out;
     for (const RankedAim& r : aims) {
-        std::vector<Candidate> strokes = pot_strokes(pos, cue, in_hand, r, effort, simulations);
+        std::vector<Candidate> strokes = pot_strokes(pos, cue, in_hand, r, pots, simulations);
         out.insert(out.end(), strokes.begin(), strokes.end());
     }
     return out;
@@ -190,7 +210,7 @@ std::vector<Candidate> combination_candidates(const Position& pos, Vec2 cue, boo
     return out;
 }
 
-std::vector<Candidate> pot_variants(const Position& pos, const Candidate& c,
+std::vector<Candidate> pot_variants(const Position& pos, const Candidate& c, const Effort& effort,
                                     std::int64_t& simulations) {
     struct Change {
         double speed, top;  // speed × factor, top + offset
@@ -209,6 +229,8 @@ std::vector<Candidate> pot_variants(const Position& pos, const Candidate& c,
         if (v.stroke.speed == c.stroke.speed && v.stroke.top == c.stroke.top) continue;
         v.stroke.heading_deg =
             refine_heading(pos.table, pos.params, cue, object, *c.aim, v.stroke, 2, simulations);
+        if (c.stroke.elevation_deg > 0.0)
+            raise_cue(pos, cue, object, *c.aim, effort, v.stroke, simulations);
         out.push_back(v);
     }
     return out;

@@ -80,7 +80,7 @@ std::vector<Candidate> combination_candidates(const Position& pos, physics::Vec2
 /// little more and less, each heading refined again (a finer search of the stroke around the
 /// best few; position play needs finer speeds than the first grid). Adds the refinement
 /// simulations to `simulations`.
-std::vector<Candidate> pot_variants(const Position& pos, const Candidate& c,
+std::vector<Candidate> pot_variants(const Position& pos, const Candidate& c, const Effort& effort,
                                     std::int64_t& simulations);
 
 std::vector<Candidate> safety_candidates(const Position& pos, physics::Vec2 cue, bool in_hand,

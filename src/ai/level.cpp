@@ -27,6 +27,7 @@ Effort effort_for_level(int level) {
          .safety_contacts = 7, .sweep_headings = 720, .shortlist = 48, .samples = 40, .finalists = 8,
          .placements = 6, .break_samples = 12, .polish = 4, .deep_finalists = 8, .deep_samples = 16,
          .next_pairs = 3, .next_speeds = 4, .next_spins = 4, .playout_shots = 4,
+         .max_raise_deg = 20.0,
          .distinct_leaves = 0.5, .stuck_ball_cost = 0.04, .combinations = 3, .tuned_breaks = true,
          .fresh_deep_draws = true},
     }};

@@ -43,6 +43,9 @@ struct Effort {
     /// follows 4 in 8-ball; 9-ball keeps 1 (`nine_ball_effort`; docs/ai.md, stops 24 and 25).
     int playout_shots = 1;
     int refine_steps = 2;  ///< secant steps of the heading refinement (aim.hpp) per pot
+    /// Pots under noise: the cue raised up to this so that the swerve of a side-offset error
+    /// cancels its squirt (aim.hpp's `compensating_elevation`); 0: a level cue (unit: deg).
+    double max_raise_deg = 0.0;
     /// 8-ball: of the shortlist, the finalists and the deep finalists, up to this share goes
     /// first to the best stroke of each distinct leave (the ball of the next pot it leaves,
     /// played without noise; selection.hpp), so that strokes leaving another ball than the

@@ -86,7 +86,7 @@ std::size_t choose_under_noise(Search& s, std::vector<Candidate>& cands,
     if (deeper && s.effort.polish > 0) {
         const std::size_t from = cands.size();
         for (std::size_t i : best_of(noisy, list, static_cast<std::size_t>(s.effort.polish))) {
-            std::vector<Candidate> more = pot_variants(s.pos, cands[i], s.simulations);
+            std::vector<Candidate> more = pot_variants(s.pos, cands[i], s.effort, s.simulations);
             cands.insert(cands.end(), more.begin(), more.end());
         }
         score_nominal(s, cands, nominal, from);
