@@ -116,6 +116,18 @@ double compensating_elevation(const physics::Table& table, const physics::Params
     return e1;
 }
 
+physics::Stroke raised_stroke(const physics::Table& table, const physics::Params& params,
+                              physics::Vec2 cue, physics::Vec2 object, const Aim& aim,
+                              physics::Stroke stroke, double elevation_deg, double min_speed,
+                              double max_speed, int refine_steps, std::int64_t& simulations) {
+    const double ball_speed = stroke.speed * std::cos(stroke.elevation_deg * deg);
+    stroke.speed = std::clamp(ball_speed / std::cos(elevation_deg * deg), min_speed, max_speed);
+    stroke.elevation_deg = elevation_deg;
+    stroke.heading_deg =
+        refine_heading(table, params, cue, object, aim, stroke, refine_steps, simulations);
+    return stroke;
+}
+
 double refine_combination_heading(const physics::Table& table, const physics::Params& params,
                                   physics::Vec2 cue, const std::map<int, physics::Vec2>& balls,
                                   const Combination& c, physics::Stroke stroke, int iterations,

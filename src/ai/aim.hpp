@@ -33,6 +33,14 @@ double compensating_elevation(const physics::Table& table, const physics::Params
                               physics::Vec2 cue, physics::Vec2 object, const Aim& aim,
                               physics::Stroke stroke, double max_deg, std::int64_t& simulations);
 
+/// `stroke` (on a level cue or not) raised to `elevation_deg` with the ball's speed kept (a raised
+/// cue drives the ball into the cloth by sin ε of the impulse: the cue's speed × 1/cos ε, within
+/// `min_speed`–`max_speed`) and its heading refined again for the object ball of `aim`.
+physics::Stroke raised_stroke(const physics::Table& table, const physics::Params& params,
+                              physics::Vec2 cue, physics::Vec2 object, const Aim& aim,
+                              physics::Stroke stroke, double elevation_deg, double min_speed,
+                              double max_speed, int refine_steps, std::int64_t& simulations);
+
 /// The same for a combination (cue ball, `c.first` and `c.second` alone on the table, where
 /// `balls` has them): the heading that sends `c.second` along `c.second.object_dir`.
 double refine_combination_heading(const physics::Table& table, const physics::Params& params,

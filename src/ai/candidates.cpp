@@ -77,11 +77,8 @@ void raise_cue(const Position& pos, Vec2 cue, Vec2 object, const Aim& aim, const
     const double e = compensating_elevation(pos.table, pos.params, cue, object, aim, stroke,
                                             effort.max_raise_deg, simulations);
     if (e == stroke.elevation_deg) return;
-    const double ball_speed = stroke.speed * std::cos(stroke.elevation_deg * deg);
-    stroke.speed = std::clamp(ball_speed / std::cos(e * deg), min_speed, max_speed);
-    stroke.elevation_deg = e;
-    stroke.heading_deg = refine_heading(pos.table, pos.params, cue, object, aim, stroke,
-                                        effort.refine_steps, simulations);
+    stroke = raised_stroke(pos.table, pos.params, cue, object, aim, stroke, e, min_speed,
+                           max_speed, effort.refine_steps, simulations);
 }
 
 double heading_to(Vec2 from, Vec2 to) {
