@@ -187,6 +187,7 @@ void Controller::refresh_preview() {
 // ---- The stroke and its playback
 
 void Controller::play(const physics::Stroke& stroke) {
+    std::vector<std::string> info_before = info_lines(session_, call());
     const game::ShotRecord* record = nullptr;
     try {
         record = &session_.play(stroke);
@@ -196,6 +197,7 @@ void Controller::play(const physics::Stroke& stroke) {
         return;
     }
     refusal_.clear();
+    info_at_strike_ = std::move(info_before);
     dry_shots_ = record->summary.down.empty() ? dry_shots_ + 1 : 0;
     preview_.reset();
     computer_decision_.reset();
@@ -205,6 +207,10 @@ void Controller::play(const physics::Stroke& stroke) {
     ++shot_serial_;
     settled_ = false;
     if (options_.playback_speed <= 0.0) skip();
+}
+
+std::vector<std::string> Controller::info() const {
+    return settled_ ? info_lines(session_, call()) : info_at_strike_;
 }
 
 void Controller::finish_shot() {

@@ -88,6 +88,9 @@ class Controller {
     bool call_is_manual() const { return manual_call_.has_value(); }
     /// The text of what the last shot did (empty before the first).
     const std::string& last_shot_words() const { return last_words_; }
+    /// The information bar (whose turn, his group, who won: plain_words' info_lines). While a
+    /// shot plays it stays as it was at the strike, so that the outcome shows when the balls stop.
+    std::vector<std::string> info() const;
     /// Why the last action was refused (shown in the panel), empty when it was not.
     const std::string& refusal() const { return refusal_; }
     /// Increments when a new shot starts playing (the app starts its sound then).
@@ -157,6 +160,7 @@ class Controller {
     bool settled_ = true;   ///< the last shot's playback has reached its end and been taken in
     int dry_shots_ = 0;     ///< computer-only games: shots with no ball down (stalemate rule)
     std::string last_words_;
+    std::vector<std::string> info_at_strike_;  ///< info() while the last shot plays
     std::string refusal_;
     int shot_serial_ = 0;
 };

@@ -179,7 +179,7 @@ PanelActions draw_panel(const Controller& c, const Settings& settings, PanelStat
     // ---- The information bar
     ImGui::Separator();
     ImGui::PushTextWrapPos(0.0f);
-    const std::vector<std::string> lines = info_lines(s, c.call());
+    const std::vector<std::string> lines = c.info();
     for (std::size_t i = 0; i < lines.size(); ++i) {
         if (i == 0) ImGui::TextColored(accent, "%s", lines[i].c_str());
         else ImGui::TextUnformatted(lines[i].c_str());

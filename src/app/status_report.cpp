@@ -2,7 +2,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/plain_words.hpp"
 #include "game/atomic_file.hpp"
 #include "rules/names.hpp"
 
@@ -44,7 +43,7 @@ std::string status_json(const Controller& c, const Settings& s, CameraMode view,
     j["power"] = c.aim().power;
     j["shots"] = session.history().size();
     j["game_number"] = session.game_number();
-    j["info"] = info_lines(session, c.call());
+    j["info"] = c.info();
     j["last_shot"] = c.last_shot_words();
     j["refusal"] = c.refusal();
     j["winner"] = session.winner() ? nlohmann::ordered_json(session.name(*session.winner())) : nlohmann::ordered_json(nullptr);

@@ -3,8 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "app/aim_preview.hpp"
+#include "app/plain_words.hpp"
 #include "app/seats.hpp"
 #include "app_support.hpp"
 #include "physics/table.hpp"
@@ -51,6 +54,25 @@ TEST(Controller, AStrikePlaysTheShotBackInRealTimeThenPassesTheTurn) {
     EXPECT_DOUBLE_EQ(c.playback().time(), end);
     EXPECT_FALSE(c.last_shot_words().empty());
     EXPECT_TRUE(c.human_to_act());
+}
+
+// The information bar tells a shot's outcome (the turn, the group, the winner) when the balls
+// stop, not at the strike while they still roll.
+TEST(Controller, TheInformationBarTellsTheOutcomeWhenTheBallsStop) {
+    app::Controller c(new_session(), options());
+    const std::vector<std::string> before = c.info();
+    ASSERT_FALSE(before.empty());
+    EXPECT_EQ(before[0], "Ann to break");
+    EXPECT_EQ(before, app::info_lines(c.session(), c.call()));
+    c.set_power(0.9);
+    c.strike();
+    c.update(0.5);
+    ASSERT_TRUE(c.moving());
+    EXPECT_EQ(c.info(), before);
+    EXPECT_NE(app::info_lines(c.session(), c.call()), before);  // the session has judged it
+    run_until_idle(c);
+    EXPECT_EQ(c.info(), app::info_lines(c.session(), c.call()));
+    EXPECT_NE(c.info()[0], "Ann to break");
 }
 
 TEST(Controller, SkipJumpsToTheEndAndReplayStartsOver) {
