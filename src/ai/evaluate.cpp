@@ -109,7 +109,8 @@ Trial Evaluator::play(const Candidate& c, const physics::Stroke& stroke, bool as
     }
     const bool pot_like = c.kind == Kind::pot || c.kind == Kind::break_shot ||
                           (c.kind == Kind::kick && s.call.is_ball());
-    t.success = pot_like ? (won || stays) : (!v.foul && !lost);
+    t.stays = won || stays;
+    t.success = pot_like ? t.stays : (!v.foul && !lost);
     return t;
 }
 

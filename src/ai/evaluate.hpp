@@ -34,6 +34,7 @@ struct Trial {
     double value = 0.0;    ///< what the outcome is worth to the shooter (0 lost … 1 won)
     double shallow = 0.0;  ///< the same, one ply deep (= value unless valued by lookahead.hpp)
     bool success = false;  ///< pots: the shooter stays at the table (or wins); safeties: no foul
+    bool stays = false;    ///< the shooter stays at the table or wins, whatever the stroke's kind
     bool foul = false;
     std::int64_t simulations = 1;  ///< physics simulations this trial ran (the second ply's too)
     /// Evaluator::nominal with `with_leave` only: the ball of the shooter's likeliest next pot
@@ -48,6 +49,7 @@ struct Score {
     int samples = 0;        ///< one-ply draws
     bool foul = false;      ///< the noiseless stroke fouls
     int leave = -1;         ///< the noiseless stroke's Trial::leave
+    bool stays = false;     ///< the noiseless stroke's Trial::stays
     double deep_sum = 0.0;  ///< score_deep: the sum of the two- less the one-ply values
     int deep_draws = 0;     ///< score_deep: the draws of that sum
 };

@@ -20,12 +20,19 @@ struct Effort {
     int safety_speeds = 3;    ///< speeds per safety contact
     int safety_contacts = 5;  ///< contact points across each legal ball for safeties
     int sweep_headings = 72;  ///< headings of the kick/bank sweep (only when nothing is simpler)
+    /// Of the sweep's kicks and banks that pot without noise, the best few moved to the middle
+    /// of their window of headings, at their speed and a little slower and faster
+    /// (heading_window.hpp); 0: none.
+    int centred_kicks = 0;
     int shortlist = 12;       ///< candidates evaluated under noise, the best nominal ones
     int samples = 12;         ///< noisy simulations per shortlisted candidate
     int finalists = 3;        ///< the best few get `samples` more
     int placements = 3;       ///< ball-in-hand spots searched in full
     int break_samples = 6;    ///< noisy simulations per break candidate
     int polish = 0;           ///< the best few pots after the noisy rounds, searched around finer
+    /// Under noise, the shortlist's pots (and the finer search's) that pot without noise turned
+    /// to the middle of their window of headings before the noisy rounds (heading_window.hpp).
+    bool centred_pots = false;
     int deep_finalists = 0;   ///< the best few after the noisy rounds, valued two plies deep
     int deep_samples = 0;     ///< noisy plays per deep finalist, each valued by lookahead.hpp
     /// Rounds of the deep search after the first that keep the better half of the deep

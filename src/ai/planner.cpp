@@ -7,6 +7,7 @@
 #include "ai/candidates.hpp"
 #include "ai/evaluate.hpp"
 #include "ai/ghost_ball.hpp"
+#include "ai/heading_window.hpp"
 #include "ai/level.hpp"
 #include "ai/parallel.hpp"
 #include "ai/placement.hpp"
@@ -37,22 +38,57 @@ double normalized(double heading_deg) {
     return h;
 }
 
-// Noiseless play of candidates [from, end): their nominal scores (with their leaves where the
+// Noiseless play of the candidates at `which`: their nominal scores (with their leaves where the
 // search keeps places for distinct ones).
 void score_nominal(Search& s, std::vector<Candidate>& cands, std::vector<Score>& nominal,
-                   std::size_t from) {
+                   const std::vector<std::size_t>& which) {
     nominal.resize(cands.size());
     const bool with_leave = s.effort.distinct_leaves > 0.0;
-    parallel_for(cands.size() - from, s.workers, [&](std::size_t k) {
-        const std::size_t i = from + k;
+    parallel_for(which.size(), s.workers, [&](std::size_t k) {
+        const std::size_t i = which[k];
         const Trial t = s.eval.nominal(cands[i], with_leave);
         // A pot that works without noise still misses now and then: rank by its chance.
         const double value = cands[i].kind == Kind::pot && s.eval.scale() > 0.0
                                  ? cands[i].prior * t.value + (1.0 - cands[i].prior) * miss_value
                                  : t.value;
         nominal[i] = Score{value, t.success ? 1.0 : 0.0, 1, t.foul, t.leave};
+        nominal[i].stays = t.stays;
     });
-    s.simulations += static_cast<std::int64_t>(cands.size() - from);
+    s.simulations += static_cast<std::int64_t>(which.size());
+}
+
+std::vector<std::size_t> indices_from(std::size_t from, std::size_t end) {
+    std::vector<std::size_t> v(end - from);
+    std::iota(v.begin(), v.end(), from);
+    return v;
+}
+
+// Noiseless play of candidates [from, end).
+void score_nominal(Search& s, std::vector<Candidate>& cands, std::vector<Score>& nominal,
+                   std::size_t from) {
+    score_nominal(s, cands, nominal, indices_from(from, cands.size()));
+}
+
+// Under noise, the pots of `which` that pot without noise turned to the middle of their window
+// of headings (heading_window.hpp), and played again without noise.
+void centre_pots(Search& s, std::vector<Candidate>& cands, std::vector<Score>& nominal,
+                 const std::vector<std::size_t>& which) {
+    if (!s.effort.centred_pots || s.eval.scale() == 0.0) return;
+    std::vector<std::int64_t> sims(which.size(), 0);
+    std::vector<char> moved(which.size(), 0);
+    parallel_for(which.size(), s.workers, [&](std::size_t k) {
+        Candidate& c = cands[which[k]];
+        if (c.kind != Kind::pot || !nominal[which[k]].stays) return;
+        if (std::optional<Candidate> m = centred(s.eval, c, pot_window_search, sims[k])) {
+            c = *m;
+            moved[k] = 1;
+        }
+    });
+    s.simulations += std::accumulate(sims.begin(), sims.end(), std::int64_t{0});
+    std::vector<std::size_t> again;
+    for (std::size_t k = 0; k < which.size(); ++k)
+        if (moved[k]) again.push_back(which[k]);
+    score_nominal(s, cands, nominal, again);
 }
 
 std::vector<std::size_t> all_indices(std::size_t n) {
@@ -72,6 +108,7 @@ std::size_t choose_under_noise(Search& s, std::vector<Candidate>& cands,
     const double share = deeper ? s.effort.distinct_leaves : 0.0;
     std::vector<std::size_t> list =
         distinct_best_of(nominal, nominal, all_indices(cands.size()), shortlist, share);
+    centre_pots(s, cands, nominal, list);
     noisy.assign(cands.size(), Score{});
     const std::size_t n = s.eval.scale() == 0.0 ? 1 : static_cast<std::size_t>(s.effort.samples);
     s.simulations += score_under_noise(s.eval, cands, list, s.draws, 0, n, noisy, s.workers);
@@ -90,9 +127,9 @@ std::size_t choose_under_noise(Search& s, std::vector<Candidate>& cands,
             cands.insert(cands.end(), more.begin(), more.end());
         }
         score_nominal(s, cands, nominal, from);
+        const std::vector<std::size_t> added = indices_from(from, cands.size());
+        centre_pots(s, cands, nominal, added);
         noisy.resize(cands.size());
-        std::vector<std::size_t> added(cands.size() - from);
-        std::iota(added.begin(), added.end(), from);
         s.simulations +=
             score_under_noise(s.eval, cands, added, s.draws, 0, drawn, noisy, s.workers);
         list.insert(list.end(), added.begin(), added.end());
@@ -235,6 +272,19 @@ Plan plan(const Position& pos, const PlanSettings& settings, std::uint64_t seed)
             if (in_hand) break;  // one spot is enough for a sweep
         }
         score_nominal(s, cands, nominal, from);
+        if (effort.centred_kicks > 0) {  // the kicks that pot, centred in their windows
+            const std::vector<Candidate> kicks(cands.begin() + static_cast<std::ptrdiff_t>(from),
+                                               cands.end());
+            const std::vector<Score> kick_scores(
+                nominal.begin() + static_cast<std::ptrdiff_t>(from), nominal.end());
+            const std::vector<Candidate> centred =
+                centred_kicks(s.eval, kicks, kick_scores,
+                              static_cast<std::size_t>(effort.centred_kicks), s.simulations,
+                              s.workers);
+            const std::size_t at = cands.size();
+            cands.insert(cands.end(), centred.begin(), centred.end());
+            score_nominal(s, cands, nominal, at);
+        }
     }
     if (cands.empty()) {  // cannot happen with a legal ball on the table; be safe anyway
         Candidate c;
