@@ -27,7 +27,7 @@ namespace ai {
 struct WindowSearch {
     double first_step_deg = 0.05;  ///< (unit: deg)
     double growth = 1.0;
-    double reach_deg = 0.6;        ///< (unit: deg)
+    double reach_deg = 0.6;  ///< (unit: deg)
     int halvings = 3;
 };
 /// Kicks: equal steps of 0.05° (a tenth of the sweep's) up to 0.6°, edges to 0.006°.

@@ -24,17 +24,17 @@ struct Effort {
     /// of their window of headings, at their speed and a little slower and faster
     /// (heading_window.hpp); 0: none.
     int centred_kicks = 0;
-    int shortlist = 12;       ///< candidates evaluated under noise, the best nominal ones
-    int samples = 12;         ///< noisy simulations per shortlisted candidate
-    int finalists = 3;        ///< the best few get `samples` more
-    int placements = 3;       ///< ball-in-hand spots searched in full
-    int break_samples = 6;    ///< noisy simulations per break candidate
-    int polish = 0;           ///< the best few pots after the noisy rounds, searched around finer
+    int shortlist = 12;     ///< candidates evaluated under noise, the best nominal ones
+    int samples = 12;       ///< noisy simulations per shortlisted candidate
+    int finalists = 3;      ///< the best few get `samples` more
+    int placements = 3;     ///< ball-in-hand spots searched in full
+    int break_samples = 6;  ///< noisy simulations per break candidate
+    int polish = 0;         ///< the best few pots after the noisy rounds, searched around finer
     /// Under noise, the shortlist's pots (and the finer search's) that pot without noise turned
     /// to the middle of their window of headings before the noisy rounds (heading_window.hpp).
     bool centred_pots = false;
-    int deep_finalists = 0;   ///< the best few after the noisy rounds, valued two plies deep
-    int deep_samples = 0;     ///< noisy plays per deep finalist, each valued by lookahead.hpp
+    int deep_finalists = 0;  ///< the best few after the noisy rounds, valued two plies deep
+    int deep_samples = 0;    ///< noisy plays per deep finalist, each valued by lookahead.hpp
     /// Rounds of the deep search after the first that keep the better half of the deep
     /// finalists only (0: one round, every deep finalist played with `deep_samples` draws).
     /// With h of them: every deep finalist gets `deep_samples` / 2 draws, then the better half
@@ -42,9 +42,9 @@ struct Effort {
     /// so far. Two halvings play as many deep trials as one round and give the best quarter
     /// twice the draws (`deepest_draws`).
     int deep_halvings = 0;
-    int next_pairs = 3;    ///< second ply: (ball, pocket) pairs tried
-    int next_speeds = 3;   ///< second ply: speeds per aim
-    int next_spins = 3;    ///< second ply: spins per aim
+    int next_pairs = 3;   ///< second ply: (ball, pocket) pairs tried
+    int next_speeds = 3;  ///< second ply: speeds per aim
+    int next_spins = 3;   ///< second ply: spins per aim
     /// The second ply played out: how many of the shooter's next shots it follows, each the
     /// best of its pots by the one-ply value, without noise (1: the next shot only). Level 5
     /// follows 4 in 8-ball; 9-ball keeps 1 (`nine_ball_effort`; docs/ai.md, stops 24 and 25).

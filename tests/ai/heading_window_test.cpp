@@ -1,5 +1,7 @@
 // Kicks and banks that pot without noise, moved to the middle of their window of headings
 // (ai::heading_window, ai::centred_kicks).
+#include "ai/heading_window.hpp"
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -9,7 +11,6 @@
 #include "ai/candidates.hpp"
 #include "ai/evaluate.hpp"
 #include "ai/ghost_ball.hpp"
-#include "ai/heading_window.hpp"
 #include "ai/level.hpp"
 #include "ai_support.hpp"
 
