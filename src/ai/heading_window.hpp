@@ -32,7 +32,7 @@ struct WindowSearch {
 };
 /// Kicks: equal steps of 0.05° (a tenth of the sweep's) up to 0.6°, edges to 0.006°.
 inline constexpr WindowSearch kick_window_search{0.05, 1.0, 0.6, 3};
-/// Pots: steps from 0.01° doubling up to 0.64°, edges to about a twentieth of the last step.
+/// Pots: steps from 0.01° doubling up to 0.64°, edges to a sixteenth of the last step.
 inline constexpr WindowSearch pot_window_search{0.01, 2.0, 0.64, 4};
 
 /// The edges of the window of headings around `c`'s at which it pots as played without noise:
