@@ -57,10 +57,15 @@ void score_nominal(Search& s, std::vector<Candidate>& cands, std::vector<Score>&
     s.simulations += static_cast<std::int64_t>(which.size());
 }
 
+// The indices [from, end).
 std::vector<std::size_t> indices_from(std::size_t from, std::size_t end) {
     std::vector<std::size_t> v(end - from);
     std::iota(v.begin(), v.end(), from);
     return v;
+}
+
+std::vector<std::size_t> all_indices(std::size_t n) {
+    return indices_from(0, n);
 }
 
 // Noiseless play of candidates [from, end).
@@ -89,12 +94,6 @@ void centre_pots(Search& s, std::vector<Candidate>& cands, std::vector<Score>& n
     for (std::size_t k = 0; k < which.size(); ++k)
         if (moved[k]) again.push_back(which[k]);
     score_nominal(s, cands, nominal, again);
-}
-
-std::vector<std::size_t> all_indices(std::size_t n) {
-    std::vector<std::size_t> v(n);
-    std::iota(v.begin(), v.end(), std::size_t{0});
-    return v;
 }
 
 // Shortlist under noise, then more draws for the finalists; with `deeper` (where the level has
