@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <optional>
+#include <span>
 
 #include "game/stroke_noise.hpp"
 #include "physics/simulate.hpp"
@@ -60,9 +62,9 @@ double secant_heading(double start_deg, double gain, int iterations, std::int64_
 
 }  // namespace
 
-double refine_heading(const physics::Table& table, const physics::Params& params,
-                      physics::Vec2 cue, physics::Vec2 object, const Aim& aim,
-                      physics::Stroke stroke, int iterations, std::int64_t& simulations) {
+double refine_heading(const physics::Table& table, const physics::Params& params, physics::Vec2 cue,
+                      physics::Vec2 object, const Aim& aim, physics::Stroke stroke, int iterations,
+                      std::int64_t& simulations) {
     const double R = params.ball_radius;
     const double cos_cut = std::max(std::cos(aim.cut_deg * deg), 0.05);
     const double gain = aim.cue_distance / (2.0 * R * cos_cut);
@@ -76,29 +78,14 @@ double refine_heading(const physics::Table& table, const physics::Params& params
     });
 }
 
-double compensating_elevation(const physics::Table& table, const physics::Params& params,
-                              physics::Vec2 cue, physics::Vec2 object, const Aim& aim,
-                              physics::Stroke stroke, double max_deg, std::int64_t& simulations) {
-    const double side_step = game::StrokeNoise{}.offset;  // one σ of the tip offset (unit: R)
-    constexpr double first_try = 12.0;                      // (unit: deg)
-    std::array<physics::BallState, 2> balls{};
-    balls[0].pos = cue;
-    balls[1].id = aim.ball;
-    balls[1].pos = object;
-    const double side = stroke.side;
-    // How much the object ball's direction turns from a side error of −step to +step.
-    const auto sensitivity = [&](double elevation) -> std::optional<double> {
-        stroke.elevation_deg = elevation;
-        simulations += 2;
-        stroke.side = side + side_step;
-        const std::optional<double> plus =
-            direction_error(table, params, balls, aim.ball, aim.object_dir, stroke, 10);
-        stroke.side = side - side_step;
-        const std::optional<double> minus =
-            direction_error(table, params, balls, aim.ball, aim.object_dir, stroke, 10);
-        if (!plus || !minus) return std::nullopt;
-        return *plus - *minus;
-    };
+namespace {
+
+// The secant method on the cue's elevation: `sensitivity(e)` is how much the watched ball's
+// direction turns from a side error of −σ to +σ on a cue raised to e. The elevation (0 to
+// `max_deg`) where it vanishes; 0 where raising does not lessen it.
+template <typename Sensitivity>
+double cancelling_elevation(double max_deg, Sensitivity sensitivity) {
+    constexpr double first_try = 12.0;  // (unit: deg)
     double e0 = 0.0, e1 = std::min(first_try, max_deg);
     std::optional<double> s0 = sensitivity(e0), s1 = sensitivity(e1);
     if (!s0 || !s1 || std::fabs(*s1) >= std::fabs(*s0)) return 0.0;
@@ -114,6 +101,73 @@ double compensating_elevation(const physics::Table& table, const physics::Params
         s1 = s2;
     }
     return e1;
+}
+
+// The first object ball the cue ball strikes, after any cushions, and the direction it leaves in
+// (unit: rad); empty when the cue ball strikes none within `max_events`.
+struct Struck {
+    int ball = 0;
+    double direction = 0.0;
+};
+std::optional<Struck> first_struck(const physics::Table& table, const physics::Params& params,
+                                   std::span<const physics::BallState> balls,
+                                   const physics::Stroke& stroke, int max_events) {
+    physics::SimOptions options;
+    options.max_events = max_events;
+    const physics::Shot shot = physics::simulate(table, params, balls, &stroke, options);
+    for (const physics::Event& e : shot.events()) {
+        if (e.type != physics::EventType::ball_ball) continue;
+        if (e.balls[0].id != 0 && e.balls[1].id != 0) return std::nullopt;  // not the cue ball
+        const physics::EventBall& b = e.balls[0].id == 0 ? e.balls[1] : e.balls[0];
+        if (physics::norm2(b.vel) == 0.0) return std::nullopt;
+        return Struck{b.id, std::atan2(b.vel.y, b.vel.x)};
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+double compensating_elevation(const physics::Table& table, const physics::Params& params,
+                              physics::Vec2 cue, physics::Vec2 object, const Aim& aim,
+                              physics::Stroke stroke, double max_deg, std::int64_t& simulations) {
+    const double side_step = game::StrokeNoise{}.offset;  // one σ of the tip offset (unit: R)
+    std::array<physics::BallState, 2> balls{};
+    balls[0].pos = cue;
+    balls[1].id = aim.ball;
+    balls[1].pos = object;
+    const double side = stroke.side;
+    // How much the object ball's direction turns from a side error of −step to +step.
+    return cancelling_elevation(max_deg, [&](double elevation) -> std::optional<double> {
+        stroke.elevation_deg = elevation;
+        simulations += 2;
+        stroke.side = side + side_step;
+        const std::optional<double> plus =
+            direction_error(table, params, balls, aim.ball, aim.object_dir, stroke, 10);
+        stroke.side = side - side_step;
+        const std::optional<double> minus =
+            direction_error(table, params, balls, aim.ball, aim.object_dir, stroke, 10);
+        if (!plus || !minus) return std::nullopt;
+        return *plus - *minus;
+    });
+}
+
+double kick_compensating_elevation(const physics::Table& table, const physics::Params& params,
+                                   std::span<const physics::BallState> balls,
+                                   physics::Stroke stroke, double max_deg,
+                                   std::int64_t& simulations) {
+    const double side_step = game::StrokeNoise{}.offset;  // one σ of the tip offset (unit: R)
+    const double side = stroke.side;
+    constexpr int max_events = 40;  // the first contact comes within a few cushions
+    return cancelling_elevation(max_deg, [&](double elevation) -> std::optional<double> {
+        stroke.elevation_deg = elevation;
+        simulations += 2;
+        stroke.side = side + side_step;
+        const std::optional<Struck> plus = first_struck(table, params, balls, stroke, max_events);
+        stroke.side = side - side_step;
+        const std::optional<Struck> minus = first_struck(table, params, balls, stroke, max_events);
+        if (!plus || !minus || plus->ball != minus->ball) return std::nullopt;
+        return std::remainder(plus->direction - minus->direction, 2.0 * std::numbers::pi);
+    });
 }
 
 physics::Stroke raised_stroke(const physics::Table& table, const physics::Params& params,

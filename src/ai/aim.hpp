@@ -6,8 +6,10 @@
 
 #include <cstdint>
 #include <map>
+#include <span>
 
 #include "ai/ghost_ball.hpp"
+#include "physics/ball_state.hpp"
 #include "physics/params.hpp"
 #include "physics/stroke.hpp"
 #include "physics/table.hpp"
@@ -17,9 +19,9 @@ namespace ai {
 /// The heading (unit: deg) that sends the object ball of `aim` along `aim.object_dir` when the
 /// cue ball at `cue` and the object ball at `object` are alone on the table and the cue ball is
 /// struck with `stroke` (its heading replaced). Adds the simulations it ran to `simulations`.
-double refine_heading(const physics::Table& table, const physics::Params& params,
-                      physics::Vec2 cue, physics::Vec2 object, const Aim& aim,
-                      physics::Stroke stroke, int iterations, std::int64_t& simulations);
+double refine_heading(const physics::Table& table, const physics::Params& params, physics::Vec2 cue,
+                      physics::Vec2 object, const Aim& aim, physics::Stroke stroke, int iterations,
+                      std::int64_t& simulations);
 
 /// The cue's elevation (unit: deg, 0 to `max_deg`) at which the object ball of `aim` leaves
 /// along the same line whatever small error the side offset of `stroke` has (cue ball and object
@@ -32,6 +34,16 @@ double refine_heading(const physics::Table& table, const physics::Params& params
 double compensating_elevation(const physics::Table& table, const physics::Params& params,
                               physics::Vec2 cue, physics::Vec2 object, const Aim& aim,
                               physics::Stroke stroke, double max_deg, std::int64_t& simulations);
+
+/// The same for a kick or a bank on the whole table (`balls` as physics::simulate takes them, the
+/// cue ball's id 0): the elevation at which the first object ball the cue ball strikes, after
+/// any cushions, leaves in the same direction whatever small error the side offset has. Along a
+/// kick's longer path the squirt of that error misses by more, and the swerve of a raised cue
+/// has longer to take it back. Adds its simulations.
+double kick_compensating_elevation(const physics::Table& table, const physics::Params& params,
+                                   std::span<const physics::BallState> balls,
+                                   physics::Stroke stroke, double max_deg,
+                                   std::int64_t& simulations);
 
 /// `stroke` (on a level cue or not) raised to `elevation_deg` with the ball's speed kept (a raised
 /// cue drives the ball into the cloth by sin ε of the impulse: the cue's speed × 1/cos ε, within

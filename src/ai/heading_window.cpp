@@ -3,11 +3,15 @@
 #include <algorithm>
 #include <numeric>
 
+#include "ai/aim.hpp"
 #include "ai/parallel.hpp"
+#include "game/session.hpp"
 
 namespace ai {
 
 namespace {
+
+constexpr double min_kick_raise_deg = 1.0;  // below this a kick stays on a level cue (unit: deg)
 
 // Whether `c` turned to `heading_deg` pots as `call` says (the shooter stays at the table with
 // that call: a kick's is that of what it pots; in 9-ball there is none).
@@ -17,6 +21,23 @@ bool pots_at(const Evaluator& eval, Candidate c, double heading_deg, const rules
     const Trial t = eval.nominal(c);
     simulations += t.simulations;
     return t.stays && c.call == call;
+}
+
+// The kick `c` (centred on a level cue) raised to where a side error's swerve cancels its squirt,
+// the ball's speed kept, and centred again; empty where raising does not help or it no longer
+// pots.
+std::optional<Candidate> raised_kick(const Position& pos, const Evaluator& eval, const Candidate& c,
+                                     double max_raise_deg, std::int64_t& simulations) {
+    const physics::Vec2 cue = c.cue_pos ? *c.cue_pos : pos.state.positions.at(0);
+    const std::vector<physics::BallState> balls = layout(pos.state, cue);
+    const double e = kick_compensating_elevation(pos.table, pos.params, balls, c.stroke,
+                                                 max_raise_deg, simulations);
+    if (e < min_kick_raise_deg) return std::nullopt;
+    Candidate r = c;
+    const double ball_speed = c.stroke.speed * std::cos(c.stroke.elevation_deg * deg);
+    r.stroke.speed = std::min(ball_speed / std::cos(e * deg), game::max_stroke_speed);
+    r.stroke.elevation_deg = e;
+    return centred(eval, r, kick_window_search, simulations);
 }
 
 }  // namespace
@@ -62,9 +83,10 @@ std::optional<Candidate> centred(const Evaluator& eval, const Candidate& c,
     return m;
 }
 
-std::vector<Candidate> centred_kicks(const Evaluator& eval, const std::vector<Candidate>& kicks,
+std::vector<Candidate> centred_kicks(const Position& pos, const Evaluator& eval,
+                                     const std::vector<Candidate>& kicks,
                                      const std::vector<Score>& nominal, std::size_t count,
-                                     std::int64_t& simulations, int workers) {
+                                     double max_raise_deg, std::int64_t& simulations, int workers) {
     std::vector<std::size_t> potting;
     for (std::size_t i = 0; i < kicks.size(); ++i)
         if (kicks[i].kind == Kind::kick && nominal[i].stays) potting.push_back(i);
@@ -80,15 +102,21 @@ std::vector<Candidate> centred_kicks(const Evaluator& eval, const std::vector<Ca
         for (double factor : kick_speed_factors) {
             Candidate c = kick;
             c.stroke.speed = kick.stroke.speed * factor;
-            if (std::optional<Candidate> m = centred(eval, c, kick_window_search, sims[k]))
-                found[k].push_back(*m);
+            std::optional<Candidate> m = centred(eval, c, kick_window_search, sims[k]);
+            if (!m) continue;
+            found[k].push_back(*m);
+            if (max_raise_deg <= 0.0) continue;
+            if (std::optional<Candidate> r = raised_kick(pos, eval, *m, max_raise_deg, sims[k]))
+                found[k].push_back(*r);
         }
     });
     simulations += std::accumulate(sims.begin(), sims.end(), std::int64_t{0});
     std::vector<Candidate> out;
     const auto tried = [&](const Candidate& c) {
         const auto same = [&](const Candidate& o) {
-            return o.stroke.speed == c.stroke.speed && o.stroke.heading_deg == c.stroke.heading_deg;
+            return o.stroke.speed == c.stroke.speed &&
+                   o.stroke.heading_deg == c.stroke.heading_deg &&
+                   o.stroke.elevation_deg == c.stroke.elevation_deg;
         };
         return std::any_of(kicks.begin(), kicks.end(), same) ||
                std::any_of(out.begin(), out.end(), same);

@@ -276,9 +276,11 @@ Plan plan(const Position& pos, const PlanSettings& settings, std::uint64_t seed)
                                                cands.end());
             const std::vector<Score> kick_scores(
                 nominal.begin() + static_cast<std::ptrdiff_t>(from), nominal.end());
+            // Raised against the squirt only under noise (without it a level cue is exact).
+            const double raise = s.eval.scale() > 0.0 ? effort.max_raise_deg : 0.0;
             const std::vector<Candidate> centred = centred_kicks(
-                s.eval, kicks, kick_scores, static_cast<std::size_t>(effort.centred_kicks),
-                s.simulations, s.workers);
+                pos, s.eval, kicks, kick_scores, static_cast<std::size_t>(effort.centred_kicks),
+                raise, s.simulations, s.workers);
             const std::size_t at = cands.size();
             cands.insert(cands.end(), centred.begin(), centred.end());
             score_nominal(s, cands, nominal, at);
