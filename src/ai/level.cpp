@@ -25,7 +25,8 @@ Effort effort_for_level(int level) {
          .next_pairs = 3, .next_speeds = 3, .next_spins = 3},
         {.noise_multiplier = 1.0, .pot_pairs = 14, .speeds = 7, .spins = 9, .safety_speeds = 4,
          .safety_contacts = 7, .sweep_headings = 720, .centred_kicks = 12, .shortlist = 48,
-         .samples = 40, .finalists = 8, .placements = 6, .break_samples = 12, .polish = 4,
+         .samples = 40, .finalists = 8, .finalist_rounds = 3, .placements = 6,
+         .break_samples = 12, .polish = 4,
          .centred_pots = true, .deep_finalists = 8, .deep_samples = 16,
          .next_pairs = 3, .next_speeds = 4, .next_spins = 4, .playout_shots = 4,
          .max_raise_deg = 20.0,
@@ -42,7 +43,8 @@ int deepest_draws(const Effort& effort) {
 }
 
 int draw_pool(const Effort& effort) {
-    const int one_ply = 2 * std::max(effort.samples, effort.break_samples);
+    const int one_ply = std::max((1 + std::max(effort.finalist_rounds, 1)) * effort.samples,
+                                 2 * effort.break_samples);
     return effort.fresh_deep_draws ? one_ply + deepest_draws(effort)
                                    : std::max(one_ply, deepest_draws(effort));
 }
@@ -67,6 +69,7 @@ Effort nine_ball_effort(int level) {
         effort.deep_samples = 64;
         effort.deep_halvings = 2;
         effort.playout_shots = 1;
+        effort.finalist_rounds = 1;
     }
     return effort;
 }
@@ -75,6 +78,7 @@ Effort for_game(Effort effort, rules::Game game) {
     if (game != rules::Game::eight_ball) {
         effort.distinct_leaves = 0.0;
         effort.stuck_ball_cost = 0.0;
+        effort.finalist_rounds = 1;
     } else {
         effort.combinations = 0;
         effort.tuned_breaks = false;

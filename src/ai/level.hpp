@@ -24,9 +24,12 @@ struct Effort {
     /// of their window of headings, at their speed and a little slower and faster
     /// (heading_window.hpp); 0: none.
     int centred_kicks = 0;
-    int shortlist = 12;     ///< candidates evaluated under noise, the best nominal ones
-    int samples = 12;       ///< noisy simulations per shortlisted candidate
-    int finalists = 3;      ///< the best few get `samples` more
+    int shortlist = 12;  ///< candidates evaluated under noise, the best nominal ones
+    int samples = 12;    ///< noisy simulations per shortlisted candidate
+    int finalists = 3;   ///< the best few get `finalist_rounds` × `samples` more
+    /// How many times `samples` more draws the finalists get (8-ball, level 5: 3, so that the
+    /// choice among near-sure pots rests on 160 draws rather than 80; docs/ai.md, stop 37).
+    int finalist_rounds = 1;
     int placements = 3;     ///< ball-in-hand spots searched in full
     int break_samples = 6;  ///< noisy simulations per break candidate
     int polish = 0;         ///< the best few pots after the noisy rounds, searched around finer
@@ -97,12 +100,14 @@ Effort rack_end_effort(int level);
 /// searches deeper there (8 pots searched finer instead of 4; 32 deep finalists instead of 8,
 /// in two halvings: 32 draws each, 32 more for the better 16, 64 more for the best 8), where
 /// each decision has few candidates (one target ball) and the second ply decides, but does not
-/// play the second ply out (2 shots gained no more than noise there, for twice the time); other
-/// levels as elsewhere. docs/ai.md, stops 19, 20, 22 and 25.
+/// play the second ply out (2 shots gained no more than noise there, for twice the time), and
+/// its finalists get one round of draws more, not 8-ball's three; other levels as elsewhere.
+/// docs/ai.md, stops 19, 20, 22 and 25.
 Effort nine_ball_effort(int level);
 
-/// `effort` for a game of `game`: the 8-ball-only parts (distinct leaves, the stuck-ball cost)
-/// set to 0 in 9-ball, where the next ball is always the lowest; the 9-ball-only parts
+/// `effort` for a game of `game`: the 8-ball-only parts (distinct leaves, the stuck-ball cost,
+/// the finalists' extra rounds of draws) set to 0 (1) in 9-ball, where the next ball is always
+/// the lowest; the 9-ball-only parts
 /// (combinations on the 9, the tuned breaks, the deep search's own draws) off in 8-ball.
 Effort for_game(Effort effort, rules::Game game);
 

@@ -115,9 +115,12 @@ std::size_t choose_under_noise(Search& s, std::vector<Candidate>& cands,
     if (s.eval.scale() > 0.0 && s.effort.finalists > 1) {
         std::vector<std::size_t> finals = distinct_best_of(
             noisy, nominal, list, static_cast<std::size_t>(s.effort.finalists), share);
-        s.simulations += score_under_noise(s.eval, cands, finals, s.draws, n, n, noisy, s.workers);
+        const std::size_t more =
+            static_cast<std::size_t>(std::max(s.effort.finalist_rounds, 1)) * n;
+        s.simulations +=
+            score_under_noise(s.eval, cands, finals, s.draws, n, more, noisy, s.workers);
         list = finals;
-        drawn = 2 * n;
+        drawn = n + more;
     }
     if (deeper && s.effort.polish > 0) {
         const std::size_t from = cands.size();

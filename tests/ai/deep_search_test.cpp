@@ -126,7 +126,7 @@ TEST(DeepDraws, LevelFiveIn9BallPlaysDrawsOfItsOwnAfterTheOnePlyRounds) {
     for (const ai::Effort& e :
          {ai::effort_for_level(ai::max_level), ai::nine_ball_effort(ai::max_level)}) {
         EXPECT_TRUE(e.fresh_deep_draws);
-        EXPECT_EQ(ai::draw_pool(e), 2 * e.samples + ai::deepest_draws(e));
+        EXPECT_EQ(ai::draw_pool(e), (1 + e.finalist_rounds) * e.samples + ai::deepest_draws(e));
     }
     // 8-ball, the end of the rack included: among the one-ply draws, as before stop 23.
     for (const ai::Effort& e :
@@ -134,7 +134,8 @@ TEST(DeepDraws, LevelFiveIn9BallPlaysDrawsOfItsOwnAfterTheOnePlyRounds) {
         const ai::Effort eight = ai::for_game(e, Game::eight_ball);
         EXPECT_FALSE(eight.fresh_deep_draws);
         EXPECT_EQ(ai::draw_pool(eight),
-                  std::max({2 * eight.samples, 2 * eight.break_samples, ai::deepest_draws(eight)}));
+                  std::max({(1 + eight.finalist_rounds) * eight.samples, 2 * eight.break_samples,
+                            ai::deepest_draws(eight)}));
     }
     EXPECT_TRUE(
         ai::for_game(ai::nine_ball_effort(ai::max_level), Game::nine_ball).fresh_deep_draws);
@@ -144,6 +145,22 @@ TEST(DeepDraws, LevelFiveIn9BallPlaysDrawsOfItsOwnAfterTheOnePlyRounds) {
         EXPECT_EQ(ai::draw_pool(e),
                   std::max({2 * e.samples, 2 * e.break_samples, ai::deepest_draws(e)}));
     }
+}
+
+// 8-ball, level 5: the finalists get three rounds of draws more, not one (160 draws each in
+// all); 9-ball and levels 1-4 one round, as before stop 37.
+TEST(FinalistDraws, ThreeMoreRoundsIn8BallAtLevelFiveOnly) {
+    for (const ai::Effort& e :
+         {ai::effort_for_level(ai::max_level), ai::rack_end_effort(ai::max_level)}) {
+        const ai::Effort eight = ai::for_game(e, Game::eight_ball);
+        EXPECT_EQ(eight.finalist_rounds, 3);
+        EXPECT_EQ(ai::draw_pool(eight), 4 * eight.samples);
+    }
+    EXPECT_EQ(ai::nine_ball_effort(ai::max_level).finalist_rounds, 1);
+    EXPECT_EQ(ai::for_game(ai::effort_for_level(ai::max_level), Game::nine_ball).finalist_rounds,
+              1);
+    for (int level = ai::min_level; level < ai::max_level; ++level)
+        EXPECT_EQ(ai::effort_for_level(level).finalist_rounds, 1) << "level " << level;
 }
 
 TEST(DeepDraws, OwnDrawsExtendTheOnePlyMeanByEachOfThem) {
