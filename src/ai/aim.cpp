@@ -80,12 +80,32 @@ double refine_heading(const physics::Table& table, const physics::Params& params
 
 namespace {
 
-// The secant method on the cue's elevation: `sensitivity(e)` is how much the watched ball's
-// direction turns from a side error of −σ to +σ on a cue raised to e. The elevation (0 to
-// `max_deg`) where it vanishes; 0 where raising does not lessen it.
-template <typename Sensitivity>
-double cancelling_elevation(double max_deg, Sensitivity sensitivity) {
-    constexpr double first_try = 12.0;  // (unit: deg)
+// Which ball a stroke watches and the direction it leaves in (unit: rad).
+struct Struck {
+    int ball = 0;
+    double direction = 0.0;
+};
+
+// The elevation (0 to `max_deg`) of `stroke`'s cue at which a side error of −σ and one of +σ
+// send the ball that `strike(stroke)` reports off in the same direction, by the secant method;
+// 0 where raising the cue does not lessen the turn. Adds two simulations per elevation tried.
+template <typename Strike>
+double cancelling_elevation(physics::Stroke stroke, double max_deg, std::int64_t& simulations,
+                            Strike strike) {
+    const double side_step = game::StrokeNoise{}.offset;  // one σ of the tip offset (unit: R)
+    constexpr double first_try = 12.0;                    // (unit: deg)
+    const double side = stroke.side;
+    // How much the ball's direction turns from a side error of −step to +step.
+    const auto sensitivity = [&](double elevation) -> std::optional<double> {
+        stroke.elevation_deg = elevation;
+        simulations += 2;
+        stroke.side = side + side_step;
+        const std::optional<Struck> plus = strike(stroke);
+        stroke.side = side - side_step;
+        const std::optional<Struck> minus = strike(stroke);
+        if (!plus || !minus || plus->ball != minus->ball) return std::nullopt;
+        return std::remainder(plus->direction - minus->direction, 2.0 * std::numbers::pi);
+    };
     double e0 = 0.0, e1 = std::min(first_try, max_deg);
     std::optional<double> s0 = sensitivity(e0), s1 = sensitivity(e1);
     if (!s0 || !s1 || std::fabs(*s1) >= std::fabs(*s0)) return 0.0;
@@ -103,12 +123,8 @@ double cancelling_elevation(double max_deg, Sensitivity sensitivity) {
     return e1;
 }
 
-// The first object ball the cue ball strikes, after any cushions, and the direction it leaves in
-// (unit: rad); empty when the cue ball strikes none within `max_events`.
-struct Struck {
-    int ball = 0;
-    double direction = 0.0;
-};
+// The first object ball the cue ball strikes, after any cushions, and the direction it leaves
+// in; empty when the cue ball strikes none within `max_events`.
 std::optional<Struck> first_struck(const physics::Table& table, const physics::Params& params,
                                    std::span<const physics::BallState> balls,
                                    const physics::Stroke& stroke, int max_events) {
@@ -130,43 +146,26 @@ std::optional<Struck> first_struck(const physics::Table& table, const physics::P
 double compensating_elevation(const physics::Table& table, const physics::Params& params,
                               physics::Vec2 cue, physics::Vec2 object, const Aim& aim,
                               physics::Stroke stroke, double max_deg, std::int64_t& simulations) {
-    const double side_step = game::StrokeNoise{}.offset;  // one σ of the tip offset (unit: R)
     std::array<physics::BallState, 2> balls{};
     balls[0].pos = cue;
     balls[1].id = aim.ball;
     balls[1].pos = object;
-    const double side = stroke.side;
-    // How much the object ball's direction turns from a side error of −step to +step.
-    return cancelling_elevation(max_deg, [&](double elevation) -> std::optional<double> {
-        stroke.elevation_deg = elevation;
-        simulations += 2;
-        stroke.side = side + side_step;
-        const std::optional<double> plus =
-            direction_error(table, params, balls, aim.ball, aim.object_dir, stroke, 10);
-        stroke.side = side - side_step;
-        const std::optional<double> minus =
-            direction_error(table, params, balls, aim.ball, aim.object_dir, stroke, 10);
-        if (!plus || !minus) return std::nullopt;
-        return *plus - *minus;
-    });
+    return cancelling_elevation(
+        stroke, max_deg, simulations, [&](const physics::Stroke& s) -> std::optional<Struck> {
+            const std::optional<double> error =
+                direction_error(table, params, balls, aim.ball, aim.object_dir, s, 10);
+            if (!error) return std::nullopt;
+            return Struck{aim.ball, *error};
+        });
 }
 
 double kick_compensating_elevation(const physics::Table& table, const physics::Params& params,
                                    std::span<const physics::BallState> balls,
                                    physics::Stroke stroke, double max_deg,
                                    std::int64_t& simulations) {
-    const double side_step = game::StrokeNoise{}.offset;  // one σ of the tip offset (unit: R)
-    const double side = stroke.side;
     constexpr int max_events = 40;  // the first contact comes within a few cushions
-    return cancelling_elevation(max_deg, [&](double elevation) -> std::optional<double> {
-        stroke.elevation_deg = elevation;
-        simulations += 2;
-        stroke.side = side + side_step;
-        const std::optional<Struck> plus = first_struck(table, params, balls, stroke, max_events);
-        stroke.side = side - side_step;
-        const std::optional<Struck> minus = first_struck(table, params, balls, stroke, max_events);
-        if (!plus || !minus || plus->ball != minus->ball) return std::nullopt;
-        return std::remainder(plus->direction - minus->direction, 2.0 * std::numbers::pi);
+    return cancelling_elevation(stroke, max_deg, simulations, [&](const physics::Stroke& s) {
+        return first_struck(table, params, balls, s, max_events);
     });
 }
 
