@@ -169,12 +169,16 @@ double kick_compensating_elevation(const physics::Table& table, const physics::P
     });
 }
 
+double speed_for_elevation(const physics::Stroke& stroke, double elevation_deg) {
+    const double ball_speed = stroke.speed * std::cos(stroke.elevation_deg * deg);
+    return ball_speed / std::cos(elevation_deg * deg);
+}
+
 physics::Stroke raised_stroke(const physics::Table& table, const physics::Params& params,
                               physics::Vec2 cue, physics::Vec2 object, const Aim& aim,
                               physics::Stroke stroke, double elevation_deg, double min_speed,
                               double max_speed, int refine_steps, std::int64_t& simulations) {
-    const double ball_speed = stroke.speed * std::cos(stroke.elevation_deg * deg);
-    stroke.speed = std::clamp(ball_speed / std::cos(elevation_deg * deg), min_speed, max_speed);
+    stroke.speed = std::clamp(speed_for_elevation(stroke, elevation_deg), min_speed, max_speed);
     stroke.elevation_deg = elevation_deg;
     stroke.heading_deg =
         refine_heading(table, params, cue, object, aim, stroke, refine_steps, simulations);

@@ -45,9 +45,14 @@ double kick_compensating_elevation(const physics::Table& table, const physics::P
                                    physics::Stroke stroke, double max_deg,
                                    std::int64_t& simulations);
 
-/// `stroke` (on a level cue or not) raised to `elevation_deg` with the ball's speed kept (a raised
-/// cue drives the ball into the cloth by sin ε of the impulse: the cue's speed × 1/cos ε, within
-/// `min_speed`–`max_speed`) and its heading refined again for the object ball of `aim`.
+/// The cue's speed (unit: m/s) that gives the ball the same speed as `stroke` when the cue is
+/// raised to `elevation_deg`: a raised cue drives the ball into the cloth by sin ε of the
+/// impulse, so the cue's speed × cos ε is what the ball keeps. Not bounded.
+double speed_for_elevation(const physics::Stroke& stroke, double elevation_deg);
+
+/// `stroke` (on a level cue or not) raised to `elevation_deg` with the ball's speed kept
+/// (`speed_for_elevation`, within `min_speed`–`max_speed`) and its heading refined again for the
+/// object ball of `aim`.
 physics::Stroke raised_stroke(const physics::Table& table, const physics::Params& params,
                               physics::Vec2 cue, physics::Vec2 object, const Aim& aim,
                               physics::Stroke stroke, double elevation_deg, double min_speed,

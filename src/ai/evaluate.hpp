@@ -75,6 +75,8 @@ class Evaluator {
     Trial nominal_to(const Candidate& c, std::optional<rules::GameState>& after) const;
 
     double scale() const { return scale_; }
+    /// The position its candidates are played from.
+    const Position& position() const { return pos_; }
 
   private:
     Trial play(const Candidate& c, const physics::Stroke& stroke, bool assign_call,

@@ -26,16 +26,16 @@ bool pots_at(const Evaluator& eval, Candidate c, double heading_deg, const rules
 // The kick `c` (centred on a level cue) raised to where a side error's swerve cancels its squirt,
 // the ball's speed kept, and centred again; empty where raising does not help or it no longer
 // pots.
-std::optional<Candidate> raised_kick(const Position& pos, const Evaluator& eval, const Candidate& c,
+std::optional<Candidate> raised_kick(const Evaluator& eval, const Candidate& c,
                                      double max_raise_deg, std::int64_t& simulations) {
+    const Position& pos = eval.position();
     const physics::Vec2 cue = c.cue_pos ? *c.cue_pos : pos.state.positions.at(0);
     const std::vector<physics::BallState> balls = layout(pos.state, cue);
     const double e = kick_compensating_elevation(pos.table, pos.params, balls, c.stroke,
                                                  max_raise_deg, simulations);
     if (e < min_kick_raise_deg) return std::nullopt;
     Candidate r = c;
-    const double ball_speed = c.stroke.speed * std::cos(c.stroke.elevation_deg * deg);
-    r.stroke.speed = std::min(ball_speed / std::cos(e * deg), game::max_stroke_speed);
+    r.stroke.speed = std::min(speed_for_elevation(c.stroke, e), game::max_stroke_speed);
     r.stroke.elevation_deg = e;
     return centred(eval, r, kick_window_search, simulations);
 }
@@ -83,8 +83,7 @@ std::optional<Candidate> centred(const Evaluator& eval, const Candidate& c,
     return m;
 }
 
-std::vector<Candidate> centred_kicks(const Position& pos, const Evaluator& eval,
-                                     const std::vector<Candidate>& kicks,
+std::vector<Candidate> centred_kicks(const Evaluator& eval, const std::vector<Candidate>& kicks,
                                      const std::vector<Score>& nominal, std::size_t count,
                                      double max_raise_deg, std::int64_t& simulations, int workers) {
     std::vector<std::size_t> potting;
@@ -106,7 +105,7 @@ std::vector<Candidate> centred_kicks(const Position& pos, const Evaluator& eval,
             if (!m) continue;
             found[k].push_back(*m);
             if (max_raise_deg <= 0.0) continue;
-            if (std::optional<Candidate> r = raised_kick(pos, eval, *m, max_raise_deg, sims[k]))
+            if (std::optional<Candidate> r = raised_kick(eval, *m, max_raise_deg, sims[k]))
                 found[k].push_back(*r);
         }
     });

@@ -54,11 +54,10 @@ std::optional<Candidate> centred(const Evaluator& eval, const Candidate& c,
 /// of `kick_speed_factors` × its speed where it still pots there, centred again. With
 /// `max_raise_deg` > 0 each of those also on a cue raised up to that, to where the swerve of a
 /// side-offset error cancels its squirt (aim.hpp's `kick_compensating_elevation`; the ball's
-/// speed kept), centred again where it still pots. None on a stroke already tried. `pos` is
-/// `eval`'s position. Adds the simulations; `workers` threads.
+/// speed kept), centred again where it still pots. None on a stroke already tried. Adds the
+/// simulations; `workers` threads.
 inline constexpr std::array<double, 3> kick_speed_factors{1.0, 0.8, 1.25};
-std::vector<Candidate> centred_kicks(const Position& pos, const Evaluator& eval,
-                                     const std::vector<Candidate>& kicks,
+std::vector<Candidate> centred_kicks(const Evaluator& eval, const std::vector<Candidate>& kicks,
                                      const std::vector<Score>& nominal, std::size_t count,
                                      double max_raise_deg, std::int64_t& simulations, int workers);
 

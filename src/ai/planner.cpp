@@ -282,8 +282,8 @@ Plan plan(const Position& pos, const PlanSettings& settings, std::uint64_t seed)
             // Raised against the squirt only under noise (without it a level cue is exact).
             const double raise = s.eval.scale() > 0.0 ? effort.max_raise_deg : 0.0;
             const std::vector<Candidate> centred = centred_kicks(
-                pos, s.eval, kicks, kick_scores, static_cast<std::size_t>(effort.centred_kicks),
-                raise, s.simulations, s.workers);
+                s.eval, kicks, kick_scores, static_cast<std::size_t>(effort.centred_kicks), raise,
+                s.simulations, s.workers);
             const std::size_t at = cands.size();
             cands.insert(cands.end(), centred.begin(), centred.end());
             score_nominal(s, cands, nominal, at);

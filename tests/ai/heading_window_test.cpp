@@ -89,7 +89,7 @@ TEST(KickWindow, CentredKicksPotWithoutNoiseAndAreNew) {
     std::int64_t sims = 0;
     const std::size_t count = 4;
     const std::vector<ai::Candidate> centred =
-        ai::centred_kicks(pos, eval, s.kicks, s.nominal, count, 0.0, sims, 2);
+        ai::centred_kicks(eval, s.kicks, s.nominal, count, 0.0, sims, 2);
     EXPECT_GE(centred.size(), count);
     EXPECT_LE(centred.size(), count * ai::kick_speed_factors.size());
     EXPECT_GT(sims, 0);
@@ -103,7 +103,7 @@ TEST(KickWindow, CentredKicksPotWithoutNoiseAndAreNew) {
     // The same every time (two workers share the search).
     std::int64_t again = 0;
     const std::vector<ai::Candidate> twice =
-        ai::centred_kicks(pos, eval, s.kicks, s.nominal, count, 0.0, again, 2);
+        ai::centred_kicks(eval, s.kicks, s.nominal, count, 0.0, again, 2);
     ASSERT_EQ(twice.size(), centred.size());
     for (std::size_t i = 0; i < centred.size(); ++i) {
         EXPECT_EQ(twice[i].stroke.heading_deg, centred[i].stroke.heading_deg);
@@ -123,7 +123,7 @@ TEST(KickWindow, RaisedKicksPotMoreOftenUnderNoise) {
     const double max_raise = ai::effort_for_level(5).max_raise_deg;
     std::int64_t sims = 0;
     const std::vector<ai::Candidate> centred =
-        ai::centred_kicks(pos, eval, s.kicks, s.nominal, 12, max_raise, sims, 2);
+        ai::centred_kicks(eval, s.kicks, s.nominal, 12, max_raise, sims, 2);
     const std::vector<ai::NoiseDraw> draws = ai::noise_draws(7, 128);
     int raised = 0, level_potted = 0, raised_potted = 0;
     for (std::size_t i = 0; i < centred.size(); ++i) {
@@ -193,7 +193,7 @@ TEST(KickWindow, NothingToCentreWhenNoKickPots) {
     Sweep s = sweep(pos, eval);
     for (ai::Score& score : s.nominal) score.stays = false;
     std::int64_t sims = 0;
-    EXPECT_TRUE(ai::centred_kicks(pos, eval, s.kicks, s.nominal, 12, 20.0, sims, 2).empty());
+    EXPECT_TRUE(ai::centred_kicks(eval, s.kicks, s.nominal, 12, 20.0, sims, 2).empty());
     EXPECT_EQ(sims, 0);
 }
 
