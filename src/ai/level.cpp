@@ -27,7 +27,7 @@ Effort effort_for_level(int level) {
          .safety_contacts = 7, .sweep_headings = 720, .centred_kicks = 12, .shortlist = 48,
          .samples = 40, .finalists = 8, .finalist_rounds = 3, .placements = 6,
          .break_samples = 12, .polish = 4,
-         .centred_pots = true, .deep_finalists = 8, .deep_samples = 16,
+         .centred_pots = true, .deep_finalists = 8, .deep_samples = 32,
          .next_pairs = 3, .next_speeds = 4, .next_spins = 4, .playout_shots = 4,
          .max_raise_deg = 20.0,
          .distinct_leaves = 0.5, .stuck_ball_cost = 0.04, .combinations = 3, .tuned_breaks = true,
@@ -56,7 +56,7 @@ Effort rack_end_effort(int level) {
         effort.finalists = 12;
         effort.polish = 6;
         effort.deep_finalists = 12;
-        effort.deep_samples = 32;
+        effort.deep_samples = 64;
     }
     return effort;
 }

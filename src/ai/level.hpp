@@ -37,7 +37,9 @@ struct Effort {
     /// to the middle of their window of headings before the noisy rounds (heading_window.hpp).
     bool centred_pots = false;
     int deep_finalists = 0;  ///< the best few after the noisy rounds, valued two plies deep
-    int deep_samples = 0;    ///< noisy plays per deep finalist, each valued by lookahead.hpp
+    /// Noisy plays per deep finalist, each valued by lookahead.hpp (8-ball, level 5: 32, 64 at
+    /// the rack's end; docs/ai.md, "Twice the deep draws in 8-ball", stop 38).
+    int deep_samples = 0;
     /// Rounds of the deep search after the first that keep the better half of the deep
     /// finalists only (0: one round, every deep finalist played with `deep_samples` draws).
     /// With h of them: every deep finalist gets `deep_samples` / 2 draws, then the better half
@@ -92,7 +94,7 @@ int draw_pool(const Effort& effort);
 
 /// The effort of `level` near the end of an 8-ball rack (table_value.hpp's `near_rack_end`; the
 /// planner uses it in 8-ball only): level 5 searches wider there (twice the shortlist, half as
-/// many finalists and polished pots again, 12 deep finalists of 32 draws), where the shooter's
+/// many finalists and polished pots again, 12 deep finalists of 64 draws), where the shooter's
 /// last few balls decide the rack and a decision has fewer candidates; other levels as elsewhere.
 Effort rack_end_effort(int level);
 
