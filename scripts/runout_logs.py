@@ -9,6 +9,12 @@
                        8), the shots, the share made, the share with a pot of chance 0.9 or
                        more on, and the runs that ended there
     left LOG...        the same table by the object balls on the table (for 9-ball)
+    stuck LOG...       8-ball: the share of racks cleared from each shot, by the balls still
+                       needed and by how many of the shooter's group balls, and whether the
+                       8, no spot of the cue ball pots (`anywhere` chance below 0.05)
+    ends LOG...        how the runs that were not cleared ended: their last shot, by the
+                       balls still needed (8-ball; "open" before the group is set) and its
+                       kind, with the mean q, planned success and value
 
     AI_VERBOSE=1 AI_VERBOSE_LAYOUT=1 ai_strength runouts --game 8ball --n 300 --seed 5 \\
         --paired 1 2>arm.log
@@ -25,6 +31,11 @@ SHOT = re.compile(
     r"-> foul (?P<foul>\d) next (?P<next>-?\d) over (?P<over>\d)"
 )
 BREAK_KIND = 3
+KINDS = ("pot", "safety", "kick", "break", "push-out")
+ANYWHERE = re.compile(r"anywhere (?P<anywhere>.*?) layout")
+PLAN = re.compile(r"kind \d balls \d+ call \S+ speed \S+ side \S+ top \S+ "
+                  r"exp (?P<exp>[\d.]+) value (?P<value>[\d.]+)")
+UNPOTTABLE = 0.05  # an `anywhere` chance below this: no spot of the cue ball pots the ball
 
 
 def racks(path):
@@ -100,6 +111,69 @@ def by_balls(paths, key, heading):
         print(f"{n:6d}  {count:5d}  {made / count:6.1%}  {easy / count:6.1%}  {ended[n]:5d}")
 
 
+def shots_of(lines):
+    """The shots of a rack after the break: (line, its SHOT match)."""
+    out = []
+    for line in lines:
+        m = SHOT.search(line)
+        if m and int(m["kind"]) != BREAK_KIND:
+            out.append((line, m))
+    return out
+
+
+def stuck_table(paths):
+    """Prints the share cleared by (balls needed, unpottable group balls, unpottable 8)."""
+    states = defaultdict(lambda: [0, 0])  # shots, from racks cleared
+    for path in paths:
+        for _, cleared, lines in racks(path):
+            for line, m in shots_of(lines):
+                group = int(m["group"])
+                a = ANYWHERE.search(line)
+                if group < 0 or not a:
+                    continue
+                chances = {int(b): float(q) for b, q in
+                           (item.split(":") for item in a["anywhere"].split())}
+                mine = range(1, 8) if group == 0 else range(9, 16)
+                stuck = sum(1 for b, q in chances.items() if b in mine and q < UNPOTTABLE)
+                eight = chances.get(8, 1.0) < UNPOTTABLE
+                s = states[(needed(group, m["layout"]), min(stuck, 2), eight)]
+                s[0] += 1
+                s[1] += cleared
+    if not states:
+        sys.exit("no shot with a group set and `anywhere` chances: run 8-ball with "
+                 "AI_VERBOSE=1 AI_VERBOSE_LAYOUT=1")
+    print("needed  stuck  8 stuck  shots  cleared")
+    for (n, stuck, eight) in sorted(states, key=lambda k: (-k[0], k[1], k[2])):
+        count, won = states[(n, stuck, eight)]
+        label = "2+" if stuck == 2 else str(stuck)
+        print(f"{n:6d}  {label:>5}  {'yes' if eight else 'no':>7}  {count:5d}  {won / count:6.1%}")
+
+
+def ends_table(paths):
+    """Prints the last shot of every run not cleared, by balls needed and kind."""
+    ends = defaultdict(list)  # (needed or "open", kind) -> [(q, exp, value)]
+    for path in paths:
+        for _, cleared, lines in racks(path):
+            shots = shots_of(lines)
+            if cleared or not shots:
+                continue
+            line, m = shots[-1]
+            plan = PLAN.search(line)
+            if not plan:
+                continue
+            group = int(m["group"])
+            n = needed(group, m["layout"]) if group >= 0 else "open"
+            ends[(n, KINDS[int(m["kind"])])].append(
+                (float(m["q"]), float(plan["exp"]), float(plan["value"])))
+    if not ends:
+        sys.exit("no run ended on a shot with its plan: run with AI_VERBOSE=1")
+    print("needed  kind      runs  mean q  exp   value")
+    for key in sorted(ends, key=lambda k: (k[0] == "open", -k[0] if k[0] != "open" else 0, k[1])):
+        rows = ends[key]
+        q, e, v = (sum(r[i] for r in rows) / len(rows) for i in range(3))
+        print(f"{key[0]:>6}  {key[1]:<8}  {len(rows):4d}  {q:6.2f}  {e:4.2f}  {v:5.3f}")
+
+
 def main(argv):
     if len(argv) == 3 and argv[0] == "compare":
         compare(argv[1], argv[2])
@@ -107,6 +181,10 @@ def main(argv):
         by_balls(argv[1:], needed, "needed")
     elif len(argv) >= 2 and argv[0] == "left":
         by_balls(argv[1:], balls_left, "left")
+    elif len(argv) >= 2 and argv[0] == "stuck":
+        stuck_table(argv[1:])
+    elif len(argv) >= 2 and argv[0] == "ends":
+        ends_table(argv[1:])
     else:
         sys.exit(__doc__)
 
