@@ -80,6 +80,16 @@ def balls_left(group, layout):
     return sum(1 for item in layout.split() if item.split(":")[0] != "0")
 
 
+def shots_of(lines):
+    """The shots of a rack after the break: (line, its SHOT match)."""
+    out = []
+    for line in lines:
+        m = SHOT.search(line)
+        if m and int(m["kind"]) != BREAK_KIND:
+            out.append((line, m))
+    return out
+
+
 def by_balls(paths, key, heading):
     """Prints the table by key(group, layout) of each shot (shots without a key are skipped)."""
     shots = defaultdict(lambda: [0, 0, 0])  # shots, made, easy
@@ -87,10 +97,7 @@ def by_balls(paths, key, heading):
     for path in paths:
         for _, cleared, lines in racks(path):
             last = None
-            for line in lines:
-                m = SHOT.search(line)
-                if not m or int(m["kind"]) == BREAK_KIND:
-                    continue
+            for _, m in shots_of(lines):
                 n = key(int(m["group"]), m["layout"])
                 if n is None:
                     continue
@@ -109,16 +116,6 @@ def by_balls(paths, key, heading):
     for n in sorted(shots, reverse=True):
         count, made, easy = shots[n]
         print(f"{n:6d}  {count:5d}  {made / count:6.1%}  {easy / count:6.1%}  {ended[n]:5d}")
-
-
-def shots_of(lines):
-    """The shots of a rack after the break: (line, its SHOT match)."""
-    out = []
-    for line in lines:
-        m = SHOT.search(line)
-        if m and int(m["kind"]) != BREAK_KIND:
-            out.append((line, m))
-    return out
 
 
 def stuck_table(paths):
