@@ -65,12 +65,17 @@ def compare(base_path, arm_path):
           f"z {z:.2f}")
 
 
+def group_balls(group):
+    """Player A's group (8-ball): the solids for group 0, the stripes for group 1."""
+    return range(1, 8) if group == 0 else range(9, 16)
+
+
 def needed(group, layout):
     """The balls player A still needs (8-ball), or None on an open table."""
     if group < 0:
         return None
     ids = [int(item.split(":")[0]) for item in layout.split()]
-    mine = range(1, 8) if group == 0 else range(9, 16)
+    mine = group_balls(group)
     return sum(1 for i in ids if i in mine) + 1
 
 
@@ -130,7 +135,7 @@ def stuck_table(paths):
                     continue
                 chances = {int(b): float(q) for b, q in
                            (item.split(":") for item in a["anywhere"].split())}
-                mine = range(1, 8) if group == 0 else range(9, 16)
+                mine = group_balls(group)
                 stuck = sum(1 for b, q in chances.items() if b in mine and q < UNPOTTABLE)
                 eight = chances.get(8, 1.0) < UNPOTTABLE
                 s = states[(needed(group, m["layout"]), min(stuck, 2), eight)]
