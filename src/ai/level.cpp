@@ -29,7 +29,7 @@ Effort effort_for_level(int level) {
          .break_samples = 12, .polish = 4,
          .centred_pots = true, .deep_finalists = 8, .deep_samples = 32,
          .next_pairs = 3, .next_speeds = 4, .next_spins = 4, .playout_shots = 4,
-         .max_raise_deg = 20.0,
+         .max_raise_deg = 20.0, .model_sigma_deg = 0.14,
          .distinct_leaves = 0.5, .stuck_ball_cost = 0.04, .combinations = 3, .tuned_breaks = true,
          .fresh_deep_draws = true},
     }};

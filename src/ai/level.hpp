@@ -58,6 +58,14 @@ struct Effort {
     /// Pots under noise: the cue raised up to this so that the swerve of a side-offset error
     /// cancels its squirt (aim.hpp's `compensating_elevation`); 0: a level cue (unit: deg).
     double max_raise_deg = 0.0;
+    /// The heading σ at 1× that the shot model (ghost_ball.hpp's `aim_chance`: the chance of
+    /// the next pots, which values the table a stroke leaves) assumes where it is below the
+    /// cue's own (`heading_sigma_deg`: 0.21° with the squirt of a side-offset error); 0: the
+    /// cue's own. Level 5 raises its cue against the squirt and centres its pots in their
+    /// window, and the engine pots its raised strokes as the model does at about 0.12°
+    /// (`shot_calibration`, maximum likelihood), those with side spin meant at about 0.25°: it
+    /// assumes 0.14° (docs/ai.md, stop 40) (unit: deg).
+    double model_sigma_deg = 0.0;
     /// 8-ball: of the shortlist, the finalists and the deep finalists, up to this share goes
     /// first to the best stroke of each distinct leave (the ball of the next pot it leaves,
     /// played without noise; selection.hpp), so that strokes leaving another ball than the

@@ -220,10 +220,15 @@ double planned_scale(const PlanSettings& settings) {
     return settings.noise * effort_for_level(settings.level).noise_multiplier;
 }
 
+double model_sigma_deg(const physics::Params& params, const Effort& effort, double scale) {
+    const double cue = heading_sigma_deg(params);
+    return (effort.model_sigma_deg > 0.0 ? std::min(effort.model_sigma_deg, cue) : cue) * scale;
+}
+
 Plan plan(const Position& pos, const PlanSettings& settings, std::uint64_t seed) {
     const Effort effort = effort_for(pos, settings.level);
     const double scale = planned_scale(settings);
-    const double sigma_deg = heading_sigma_deg(pos.params) * scale;
+    const double sigma_deg = model_sigma_deg(pos.params, effort, scale);
     if (pos.choice) return plan_choice(pos, sigma_deg, effort.stuck_ball_cost);
 
     Search s{pos, effort, Evaluator(pos, scale, sigma_deg, effort.stuck_ball_cost),

@@ -15,6 +15,7 @@
 #include <cstdint>
 
 #include "ai/candidates.hpp"
+#include "ai/level.hpp"
 #include "ai/position.hpp"
 #include "game/player.hpp"
 
@@ -38,5 +39,10 @@ Plan plan(const Position& pos, const PlanSettings& settings, std::uint64_t seed)
 
 /// The execution-noise scale a player of `settings` strokes with: noise × the level's multiplier.
 double planned_scale(const PlanSettings& settings);
+
+/// The heading σ (deg) the shot model assumes for a player of `effort` who strokes with noise
+/// scale `scale`: the cue's own (`heading_sigma_deg`), or `Effort::model_sigma_deg` where that
+/// is smaller, × `scale`.
+double model_sigma_deg(const physics::Params& params, const Effort& effort, double scale);
 
 }  // namespace ai
