@@ -71,10 +71,11 @@ struct Timing {
         sims.push_back(static_cast<double>(n));
     }
     void print() const {
-        std::printf("\"decisions\": %zu, \"seconds_median\": %.4f, \"seconds_p95\": %.4f, "
-                    "\"simulations_median\": %.0f, \"simulations_p95\": %.0f",
-                    seconds.size(), quantile(seconds, 0.5), quantile(seconds, 0.95),
-                    quantile(sims, 0.5), quantile(sims, 0.95));
+        std::printf(
+            "\"decisions\": %zu, \"seconds_median\": %.4f, \"seconds_p95\": %.4f, "
+            "\"simulations_median\": %.0f, \"simulations_p95\": %.0f",
+            seconds.size(), quantile(seconds, 0.5), quantile(seconds, 0.95), quantile(sims, 0.5),
+            quantile(sims, 0.95));
     }
 };
 
@@ -135,8 +136,8 @@ Played play(const ai::Position& pos, const ai::PlanSettings& settings, std::uint
     if (plan.decision.push_out) s.shot = rules::Shot::push_out;
     const physics::Stroke stroke =
         game::with_noise(plan.decision.stroke, ai::planned_scale(settings), noise_rng);
-    const physics::Shot shot = physics::simulate(pos.table, pos.params,
-                                                 ai::layout(s, s.positions.at(0)), &stroke);
+    const physics::Shot shot =
+        physics::simulate(pos.table, pos.params, ai::layout(s, s.positions.at(0)), &stroke);
     rules::Verdict v = rules::judge(pos.ruleset, s, shot.events());
     if (std::getenv("AI_VERBOSE")) print_shot(pos, plan, s, stroke, v);
     return {v};
@@ -158,8 +159,8 @@ void shots(const Args& a) {
         pos.state.positions = bench::two_ball_layout(pos.table, pos.params.ball_radius, rng);
         const double q = ai::best_shot_chance(pos, pos.state, ai::heading_sigma_deg(pos.params));
         const int bin = std::clamp(static_cast<int>((1.0 - q) * 5.0), 0, 4);  // 0: easiest
-        const Played p = play(pos, settings, a.seed * 7919 + static_cast<std::uint64_t>(i),
-                              noise_rng, timing);
+        const Played p =
+            play(pos, settings, a.seed * 7919 + static_cast<std::uint64_t>(i), noise_rng, timing);
         ++tried[static_cast<std::size_t>(bin)];
         if (p.verdict.game_over && p.verdict.winner == rules::Player::A)
             ++made[static_cast<std::size_t>(bin)];
@@ -168,13 +169,14 @@ void shots(const Args& a) {
                 a.level, a.noise, a.n);
     int all = 0;
     for (int b = 0; b < 5; ++b) {
-        const Interval w = wilson(made[static_cast<std::size_t>(b)], tried[static_cast<std::size_t>(b)]);
+        const Interval w =
+            wilson(made[static_cast<std::size_t>(b)], tried[static_cast<std::size_t>(b)]);
         all += made[static_cast<std::size_t>(b)];
-        std::printf("%s{\"model_chance\": \"%.1f-%.1f\", \"layouts\": %d, \"potted\": %d, "
-                    "\"rate\": %.3f, \"ci95\": [%.3f, %.3f]}",
-                    b ? ", " : "", 1.0 - 0.2 * (b + 1), 1.0 - 0.2 * b,
-                    tried[static_cast<std::size_t>(b)], made[static_cast<std::size_t>(b)], w.rate,
-                    w.lo, w.hi);
+        std::printf(
+            "%s{\"model_chance\": \"%.1f-%.1f\", \"layouts\": %d, \"potted\": %d, "
+            "\"rate\": %.3f, \"ci95\": [%.3f, %.3f]}",
+            b ? ", " : "", 1.0 - 0.2 * (b + 1), 1.0 - 0.2 * b, tried[static_cast<std::size_t>(b)],
+            made[static_cast<std::size_t>(b)], w.rate, w.lo, w.hi);
     }
     const Interval w = wilson(all, a.n);
     std::printf("], \"potted\": %d, \"rate\": %.3f, \"ci95\": [%.3f, %.3f], ", all, w.rate, w.lo,
@@ -205,7 +207,8 @@ void runouts(const Args& a) {
             pos.table, pos.params, a.seed * 1000003ULL + static_cast<std::uint64_t>(i));
         for (const physics::BallState& b : balls)
             if (b.id != 0) pos.state.positions[b.id] = b.pos;
-        const Played broken = play(pos, settings, ++decision * 31 + a.seed, noise_rng, break_timing);
+        const Played broken =
+            play(pos, settings, ++decision * 31 + a.seed, noise_rng, break_timing);
         rules::GameState s = broken.verdict.state;
         const int key = game == rules::Game::eight_ball ? 8 : 9;
         if (broken.verdict.game_over || !s.has(key)) continue;
@@ -233,9 +236,10 @@ void runouts(const Args& a) {
         if (a.paired) std::fprintf(stderr, "rack %d %d\n", i, won ? 1 : 0);
     }
     const Interval w = wilson(cleared, racks);
-    std::printf("{\"mode\": \"runouts\", \"game\": \"%s\", \"level\": %d, \"noise\": %g, "
-                "\"racks\": %d, \"cleared\": %d, \"rate\": %.3f, \"ci95\": [%.3f, %.3f], ",
-                a.game.c_str(), a.level, a.noise, racks, cleared, w.rate, w.lo, w.hi);
+    std::printf(
+        "{\"mode\": \"runouts\", \"game\": \"%s\", \"level\": %d, \"noise\": %g, "
+        "\"racks\": %d, \"cleared\": %d, \"rate\": %.3f, \"ci95\": [%.3f, %.3f], ",
+        a.game.c_str(), a.level, a.noise, racks, cleared, w.rate, w.lo, w.hi);
     timing.print();
     std::printf(", \"break_seconds_median\": %.4f}\n", quantile(break_timing.seconds, 0.5));
 }
@@ -247,30 +251,42 @@ int main(int argc, char** argv) {
     if (argc > 1) a.mode = argv[1];
     for (int i = 2; i + 1 < argc; i += 2) {
         const std::string k = argv[i], v = argv[i + 1];
-        if (k == "--n") a.n = std::atoi(v.c_str());
-        else if (k == "--level") a.level = std::atoi(v.c_str());
-        else if (k == "--noise") a.noise = std::atof(v.c_str());
-        else if (k == "--seed") a.seed = std::strtoull(v.c_str(), nullptr, 10);
-        else if (k == "--game") a.game = v;
-        else if (k == "--paired") a.paired = v == "1";
-        else if (k == "--from") a.from = std::atoi(v.c_str());
-        else if (k == "--cue-endmass") a.cue_endmass = std::atof(v.c_str());
+        if (k == "--n")
+            a.n = std::atoi(v.c_str());
+        else if (k == "--level")
+            a.level = std::atoi(v.c_str());
+        else if (k == "--noise")
+            a.noise = std::atof(v.c_str());
+        else if (k == "--seed")
+            a.seed = std::strtoull(v.c_str(), nullptr, 10);
+        else if (k == "--game")
+            a.game = v;
+        else if (k == "--paired")
+            a.paired = v == "1";
+        else if (k == "--from")
+            a.from = std::atoi(v.c_str());
+        else if (k == "--cue-endmass")
+            a.cue_endmass = std::atof(v.c_str());
         else {
             std::fprintf(stderr, "unknown option %s\n", k.c_str());
             return 2;
         }
     }
     if (!(a.cue_endmass > 0.0 && a.cue_endmass <= 100.0)) {
-        std::fprintf(stderr, "--cue-endmass: must be a mass in kg above 0 and at most 100 "
-                             "(e.g. 0.015, or 1e-9 for no squirt)\n");
+        std::fprintf(stderr,
+                     "--cue-endmass: must be a mass in kg above 0 and at most 100 "
+                     "(e.g. 0.015, or 1e-9 for no squirt)\n");
         return 2;
     }
-    if (a.mode == "shots") shots(a);
-    else if (a.mode == "runouts") runouts(a);
+    if (a.mode == "shots")
+        shots(a);
+    else if (a.mode == "runouts")
+        runouts(a);
     else {
-        std::fprintf(stderr, "usage: ai_strength shots|runouts [--n N] [--level L] [--noise X] "
-                             "[--seed S] [--game 8ball|9ball] [--paired 1] [--from F] "
-                             "[--cue-endmass KG]\n");
+        std::fprintf(stderr,
+                     "usage: ai_strength shots|runouts [--n N] [--level L] [--noise X] "
+                     "[--seed S] [--game 8ball|9ball] [--paired 1] [--from F] "
+                     "[--cue-endmass KG]\n");
         return 2;
     }
     return 0;

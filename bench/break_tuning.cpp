@@ -53,13 +53,18 @@ int main(int argc, char** argv) {
     Args a;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string k = argv[i], v = argv[i + 1];
-        if (k == "--game") a.game = v;
-        else if (k == "--n") a.n = std::atoi(v.c_str());
-        else if (k == "--draws") a.draws = std::atoi(v.c_str());
-        else if (k == "--seed") a.seed = std::strtoull(v.c_str(), nullptr, 10);
+        if (k == "--game")
+            a.game = v;
+        else if (k == "--n")
+            a.n = std::atoi(v.c_str());
+        else if (k == "--draws")
+            a.draws = std::atoi(v.c_str());
+        else if (k == "--seed")
+            a.seed = std::strtoull(v.c_str(), nullptr, 10);
         else {
-            std::fprintf(stderr, "usage: break_tuning [--game 8ball|9ball] [--n N] [--draws D] "
-                                 "[--seed S]\n");
+            std::fprintf(stderr,
+                         "usage: break_tuning [--game 8ball|9ball] [--n N] [--draws D] "
+                         "[--seed S]\n");
             return 2;
         }
     }
@@ -77,10 +82,10 @@ int main(int argc, char** argv) {
     for (int i = 0; i < a.n; ++i) {
         pos.state = rules::initial_state(game, rules::Player::A);
         pos.state.positions.clear();
-        for (const physics::BallState& b :
-             physics::rack(game == rules::Game::eight_ball ? physics::RackType::eight_ball
-                                                           : physics::RackType::nine_ball,
-                           pos.table, pos.params, a.seed * 1000003ULL + static_cast<std::uint64_t>(i)))
+        for (const physics::BallState& b : physics::rack(
+                 game == rules::Game::eight_ball ? physics::RackType::eight_ball
+                                                 : physics::RackType::nine_ball,
+                 pos.table, pos.params, a.seed * 1000003ULL + static_cast<std::uint64_t>(i)))
             if (b.id != 0) pos.state.positions[b.id] = b.pos;
         for (Tally& t : grid) {
             const std::optional<ai::Candidate> c = ai::break_candidate(pos, t.spec);
@@ -89,8 +94,8 @@ int main(int argc, char** argv) {
             s.positions[0] = *c->cue_pos;
             for (int d = 0; d < a.draws; ++d) {
                 const physics::Stroke stroke = game::with_noise(c->stroke, 1.0, noise);
-                const physics::Shot shot = physics::simulate(
-                    pos.table, pos.params, ai::layout(s, *c->cue_pos), &stroke);
+                const physics::Shot shot =
+                    physics::simulate(pos.table, pos.params, ai::layout(s, *c->cue_pos), &stroke);
                 const rules::Verdict v = rules::judge(pos.ruleset, s, shot.events());
                 t.stuck += stuck_objects(pos, v.state);
                 t.down += static_cast<double>(s.on_table.size() - v.state.on_table.size());
@@ -102,11 +107,12 @@ int main(int argc, char** argv) {
     }
     for (const Tally& t : grid) {
         const double n = t.played > 0.0 ? t.played : 1.0;
-        std::printf("{\"game\": \"%s\", \"offset\": %.2f, \"contact\": %.2f, \"speed\": %.1f, "
-                    "\"breaks\": %.0f, \"stuck\": %.3f, \"down\": %.3f, \"fouls\": %.3f, "
-                    "\"key_ball_down\": %.3f}\n",
-                    a.game.c_str(), t.spec.offset, t.spec.contact, t.spec.speed, t.played,
-                    t.stuck / n, t.down / n, t.fouls / n, t.key_down / n);
+        std::printf(
+            "{\"game\": \"%s\", \"offset\": %.2f, \"contact\": %.2f, \"speed\": %.1f, "
+            "\"breaks\": %.0f, \"stuck\": %.3f, \"down\": %.3f, \"fouls\": %.3f, "
+            "\"key_ball_down\": %.3f}\n",
+            a.game.c_str(), t.spec.offset, t.spec.contact, t.spec.speed, t.played, t.stuck / n,
+            t.down / n, t.fouls / n, t.key_down / n);
     }
     return 0;
 }

@@ -138,8 +138,8 @@ void dump(const std::string& path, const std::vector<Row>& rows) {
     for (const Row& r : rows) {
         const physics::Pocket& pk = table.pockets[static_cast<std::size_t>(r.aim.pocket)];
         std::fprintf(f, "%d %.6f %.4f %.6f %.6f %d %d\n", r.aim.pocket,
-                     physics::dot(r.aim.object_dir, pk.inward), r.aim.cut_deg,
-                     r.aim.cue_distance, r.aim.object_distance, r.potted, r.played);
+                     physics::dot(r.aim.object_dir, pk.inward), r.aim.cut_deg, r.aim.cue_distance,
+                     r.aim.object_distance, r.potted, r.played);
     }
     std::fclose(f);
 }
@@ -188,15 +188,22 @@ int main(int argc, char** argv) {
     Args a;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string k = argv[i], v = argv[i + 1];
-        if (k == "--n") a.n = std::atoi(v.c_str());
-        else if (k == "--seed") a.seed = std::strtoull(v.c_str(), nullptr, 10);
-        else if (k == "--noise") a.noise = std::atof(v.c_str());
-        else if (k == "--layouts") a.layouts = v;
-        else if (k == "--pockets" && (v == "all" || v == "side" || v == "corner")) a.pockets = v;
-        else if (k == "--dump") a.dump = v;
+        if (k == "--n")
+            a.n = std::atoi(v.c_str());
+        else if (k == "--seed")
+            a.seed = std::strtoull(v.c_str(), nullptr, 10);
+        else if (k == "--noise")
+            a.noise = std::atof(v.c_str());
+        else if (k == "--layouts")
+            a.layouts = v;
+        else if (k == "--pockets" && (v == "all" || v == "side" || v == "corner"))
+            a.pockets = v;
+        else if (k == "--dump")
+            a.dump = v;
         else {
-            std::fprintf(stderr, "usage: shot_calibration [--n N] [--seed S] [--noise X] "
-                                 "[--layouts FILE] [--pockets all|side|corner] [--dump FILE]\n");
+            std::fprintf(stderr,
+                         "usage: shot_calibration [--n N] [--seed S] [--noise X] "
+                         "[--layouts FILE] [--pockets all|side|corner] [--dump FILE]\n");
             return 2;
         }
     }

@@ -77,8 +77,8 @@ void raise_cue(const Position& pos, Vec2 cue, Vec2 object, const Aim& aim, const
     const double e = compensating_elevation(pos.table, pos.params, cue, object, aim, stroke,
                                             effort.max_raise_deg, simulations);
     if (e == stroke.elevation_deg) return;
-    stroke = raised_stroke(pos.table, pos.params, cue, object, aim, stroke, e, min_speed,
-                           max_speed, effort.refine_steps, simulations);
+    stroke = raised_stroke(pos.table, pos.params, cue, object, aim, stroke, e, min_speed, max_speed,
+                           effort.refine_steps, simulations);
 }
 
 double heading_to(Vec2 from, Vec2 to) {
@@ -170,10 +170,9 @@ std::vector<RankedCombination> ranked_combinations(const Position& pos, Vec2 cue
         if (std::optional<Combination> c =
                 combination_aim(pos.table, R, cue, *first, 9, pocket, pos.state.positions))
             out.push_back({*c, combination_chance(*c, R, sigma_deg)});
-    std::stable_sort(out.begin(), out.end(), [](const RankedCombination& a,
-                                                const RankedCombination& b) {
-        return a.chance > b.chance;
-    });
+    std::stable_sort(
+        out.begin(), out.end(),
+        [](const RankedCombination& a, const RankedCombination& b) { return a.chance > b.chance; });
     return out;
 }
 

@@ -97,18 +97,18 @@ struct BreakSpec {
 };
 /// The break of `spec` in `pos`; empty when its spot is taken.
 std::optional<Candidate> break_candidate(const Position& pos, const BreakSpec& spec);
-/// The breaks level 5 chooses among in 9-ball, tuned offline (`break_tuning`, docs/ai.md "Breaks"): full
-/// on the apex ball from the middle or a little off it, hard. Of the spots, contacts and speeds
-/// measured, these leave the fewest balls with no path to a pocket and pocket the most, with no
-/// more scratches than the others.
+/// The breaks level 5 chooses among in 9-ball, tuned offline (`break_tuning`, docs/ai.md "Breaks"):
+/// full on the apex ball from the middle or a little off it, hard. Of the spots, contacts and
+/// speeds measured, these leave the fewest balls with no path to a pocket and pocket the most, with
+/// no more scratches than the others.
 inline constexpr std::array<BreakSpec, 6> tuned_breaks{{{0.0, 0.0, 9.5},
                                                         {0.0, 0.0, 10.0},
                                                         {0.08, 0.0, 9.5},
                                                         {-0.08, 0.0, 9.5},
                                                         {0.08, 0.0, 10.0},
                                                         {-0.08, 0.0, 10.0}}};
-/// The broad set the lower levels (and 8-ball) choose among: five spots, full or a quarter of a ball off the
-/// apex ball's centre, at 6.5, 8 and 9.5 m/s.
+/// The broad set the lower levels (and 8-ball) choose among: five spots, full or a quarter of a
+/// ball off the apex ball's centre, at 6.5, 8 and 9.5 m/s.
 std::vector<BreakSpec> broad_breaks();
 /// The breaks tried in `pos`: the tuned ones (`tuned`) or the broad set, those whose spot is free.
 std::vector<Candidate> break_candidates(const Position& pos, bool tuned);

@@ -14,7 +14,7 @@ using physics::Vec2;
 
 constexpr double max_cut_deg = 80.0;
 constexpr double max_combination_cut_deg = 45.0;  // a combination's cut of its second ball
-constexpr double clearance_slack = 1e-4;  // (unit: m)
+constexpr double clearance_slack = 1e-4;          // (unit: m)
 
 double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
     const Vec2 ab = b - a;

@@ -19,14 +19,14 @@ namespace ai {
 struct Aim {
     int ball = 0;
     int pocket = 0;
-    physics::Vec2 aim_point;      ///< where the object ball's centre is sent (unit: m)
-    physics::Vec2 ghost;          ///< the cue ball's centre at contact (unit: m)
-    physics::Vec2 object_dir;     ///< unit direction the object ball must take
-    double heading_deg = 0.0;     ///< cue ball → ghost (unit: deg)
-    double cut_deg = 0.0;         ///< angle between the cue ball's path and the object's (unit: deg)
-    double cue_distance = 0.0;    ///< cue ball to ghost (unit: m)
-    double object_distance = 0.0; ///< object ball to the aim point (unit: m)
-    double tolerance = 0.0;       ///< half-angle of the pocket seen from the object ball (unit: rad)
+    physics::Vec2 aim_point;    ///< where the object ball's centre is sent (unit: m)
+    physics::Vec2 ghost;        ///< the cue ball's centre at contact (unit: m)
+    physics::Vec2 object_dir;   ///< unit direction the object ball must take
+    double heading_deg = 0.0;   ///< cue ball → ghost (unit: deg)
+    double cut_deg = 0.0;       ///< angle between the cue ball's path and the object's (unit: deg)
+    double cue_distance = 0.0;  ///< cue ball to ghost (unit: m)
+    double object_distance = 0.0;  ///< object ball to the aim point (unit: m)
+    double tolerance = 0.0;  ///< half-angle of the pocket seen from the object ball (unit: rad)
 };
 
 /// Effective σ of the cue ball's heading at execution-noise scale 1: the noise model's heading σ

@@ -25,7 +25,7 @@ double turn_value(const Position& base, const rules::GameState& s, const Effort&
     second.pot_pairs = effort.next_pairs;
     second.speeds = effort.next_speeds;
     second.spins = effort.next_spins;
-    second.refine_steps = 1;  // one secant step: the second ply only ranks
+    second.refine_steps = 1;     // one secant step: the second ply only ranks
     second.max_raise_deg = 0.0;  // played without noise
     std::vector<RankedAim> aims = ranked_aims(next, cue->second, sigma_deg);
     if (aims.size() > static_cast<std::size_t>(second.pot_pairs))

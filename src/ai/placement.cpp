@@ -36,7 +36,8 @@ std::vector<Vec2> cue_spots(const Position& pos, int count, double sigma_deg) {
         int pair = -1;
         for (int ball : target_balls(pos.ruleset, pos.state))
             for (int pocket = 0; pocket < 6; ++pocket)
-                if (std::optional<Aim> a = direct_aim(pos.table, R, p, ball, pocket, pos.state.positions)) {
+                if (std::optional<Aim> a =
+                        direct_aim(pos.table, R, p, ball, pocket, pos.state.positions)) {
                     // A slight cut lets the cue ball go on to the next shot.
                     const double bias = a->cut_deg > 8.0 && a->cut_deg < 35.0 ? 0.02 : 0.0;
                     const double q = aim_chance(*a, R, sigma_deg) + bias;

@@ -4,9 +4,9 @@
 //   break          ─▶ break candidates, each played with noise draws (9-ball, level 5: the tuned)
 //   else           ─▶ cue spots (ball in hand: placement.hpp) ─▶ pots + safeties per spot
 //                     (9-ball, level 5: + combinations on the 9, with spots of their own)
-//                     ─▶ noiseless play of each (the shortlist) ─▶ kicks if nothing is legal or good
-//                     ─▶ shortlist × noise draws ─▶ finalists × more draws ─▶ the best mean
-//                     ─▶ 9-ball: a push-out instead, when that is worth more
+//                     ─▶ noiseless play of each (the shortlist) ─▶ kicks if nothing is legal or
+//                     good ─▶ shortlist × noise draws ─▶ finalists × more draws ─▶ the best mean ─▶
+//                     9-ball: a push-out instead, when that is worth more
 //
 // Reproducible: the same position, settings and seed give the same decision, bit for bit,
 // whatever the threads' timing.

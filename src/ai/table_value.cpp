@@ -156,8 +156,8 @@ double verdict_value(const Position& base, const rules::GameState& before, const
     if (v.choice) {
         double best = 0.0;
         for (rules::ChoiceOption o : v.choice->options)
-            best = std::max(best,
-                            option_value(base, v.state, o, v.choice->by, sigma_deg, stuck_cost));
+            best =
+                std::max(best, option_value(base, v.state, o, v.choice->by, sigma_deg, stuck_cost));
         return v.choice->by == me ? best : 1.0 - best;
     }
     const double value = position_value(base, v.state, sigma_deg, stuck_cost);

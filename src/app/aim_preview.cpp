@@ -14,7 +14,9 @@ constexpr double cue_after_time = 0.6;   // how much of the cue ball's path afte
 constexpr double object_max_time = 3.0;  // longest object-ball path drawn (unit: s)
 constexpr double free_path_time = 4.0;   // cue ball that hits nothing: path drawn (unit: s)
 
-glm::vec2 to_glm(physics::Vec2 p) { return {static_cast<float>(p.x), static_cast<float>(p.y)}; }
+glm::vec2 to_glm(physics::Vec2 p) {
+    return {static_cast<float>(p.x), static_cast<float>(p.y)};
+}
 
 // Ball `id`'s centre from t0 to t1, sampled (pocketed: the path stops where it dropped).
 std::vector<glm::vec2> sample_path(const physics::Shot& shot, int id, double t0, double t1) {
@@ -92,10 +94,13 @@ AimPreview preview_aim(const physics::Table& table, const physics::Params& param
 
     const physics::Event* next = next_collision(shot, contact, object.id);
     const double object_end = next ? next->time : hit.time + object_max_time;
-    out.view.object_path = sample_path(shot, object.id, hit.time, std::min(object_end, hit.time + object_max_time));
-    if (next && next->type == physics::EventType::pocket) out.view.object_path.push_back(to_glm(next->balls[0].pos));
+    out.view.object_path =
+        sample_path(shot, object.id, hit.time, std::min(object_end, hit.time + object_max_time));
+    if (next && next->type == physics::EventType::pocket)
+        out.view.object_path.push_back(to_glm(next->balls[0].pos));
     const physics::Event* cue_next = next_collision(shot, contact, 0);
-    const double cue_end = std::min(hit.time + cue_after_time, cue_next ? cue_next->time : hit.time + cue_after_time);
+    const double cue_end =
+        std::min(hit.time + cue_after_time, cue_next ? cue_next->time : hit.time + cue_after_time);
     out.view.cue_after = sample_path(shot, 0, hit.time, cue_end);
 
     for (std::size_t i = contact + 1; i < events.size(); ++i)

@@ -3,20 +3,20 @@
 #include "app/app.hpp"
 
 #include <SDL.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <backends/imgui_impl_sdl.h>
 #include <epoxy/gl.h>
 #include <fmt/format.h>
 #include <imgui.h>
-#include <backends/imgui_impl_opengl3.h>
-#include <backends/imgui_impl_sdl.h>
 
 #include <algorithm>
 #include <chrono>
-#include <stdexcept>
-#include <tuple>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <numbers>
+#include <stdexcept>
+#include <tuple>
 
 #include "app/camera_rig.hpp"
 #include "app/controller.hpp"
@@ -38,7 +38,9 @@ namespace app {
 
 namespace {
 
-CameraMode camera_mode(ViewMode v) { return v == ViewMode::overhead ? CameraMode::overhead : CameraMode::cue_ball; }
+CameraMode camera_mode(ViewMode v) {
+    return v == ViewMode::overhead ? CameraMode::overhead : CameraMode::cue_ball;
+}
 
 audio::Listener listener_of(const render::Camera& c) {
     const glm::vec3 f = c.target - c.eye;
@@ -64,19 +66,23 @@ struct Table {
     bool exit_requested = false;
 
     explicit Table(GameSetup s)
-        : setup(std::move(s)), controller(std::move(*setup.session), setup.controller),
+        : setup(std::move(s)),
+          controller(std::move(*setup.session), setup.controller),
           rig(camera_mode(setup.settings.view)) {
         panel.notice = setup.notice;
         saved = setup.settings;
         controller.set_power(setup.settings.power);
     }
 
-    render::Camera camera(float aspect) const { return rig.camera(controller.session().table(), aspect); }
+    render::Camera camera(float aspect) const {
+        return rig.camera(controller.session().table(), aspect);
+    }
 
     // Keeps the cue-ball view on the cue ball and the aim (frozen while the balls move).
     void follow_cue_ball() {
         if (controller.moving()) return;
-        const float heading = static_cast<float>(controller.aim().heading_deg * std::numbers::pi / 180.0);
+        const float heading =
+            static_cast<float>(controller.aim().heading_deg * std::numbers::pi / 180.0);
         rig.set_anchor(cue_ball_at(controller), heading, true, last_camera);
     }
 
@@ -87,7 +93,8 @@ struct Table {
 
     void change_view() {
         rig.next_view(last_camera);
-        setup.settings.view = rig.mode() == CameraMode::cue_ball ? ViewMode::cue_ball : ViewMode::overhead;
+        setup.settings.view =
+            rig.mode() == CameraMode::cue_ball ? ViewMode::cue_ball : ViewMode::overhead;
     }
 
     void apply(const PanelActions& a) {
@@ -139,7 +146,8 @@ struct Table {
 
     void save_and_close() {
         const std::string err = save_on_exit(controller.session(), setup.autosave_path);
-        if (!err.empty()) std::fprintf(stderr, "coolaaber: the game was not saved: %s\n", err.c_str());
+        if (!err.empty())
+            std::fprintf(stderr, "coolaaber: the game was not saved: %s\n", err.c_str());
         try {
             save_settings(setup.settings_path, setup.settings);
         } catch (const std::exception& e) {
@@ -148,34 +156,63 @@ struct Table {
     }
 };
 
-bool key_shift() { return (SDL_GetModState() & KMOD_SHIFT) != 0; }
+bool key_shift() {
+    return (SDL_GetModState() & KMOD_SHIFT) != 0;
+}
 
 // The keyboard at the table (docs/app.md, "Playing").
 void on_key(Table& t, SDL_Window* window, SDL_Keycode key, bool shift) {
     switch (key) {
-        case SDLK_LEFT: t.controller.turn_aim(shift ? 0.05 : 0.5); break;
-        case SDLK_RIGHT: t.controller.turn_aim(shift ? -0.05 : -0.5); break;
-        case SDLK_UP: t.set_power(t.controller.aim().power + 0.05); break;
-        case SDLK_DOWN: t.set_power(t.controller.aim().power - 0.05); break;
-        case SDLK_SPACE: t.controller.strike(); break;
-        case SDLK_v: t.change_view(); break;
-        case SDLK_s:
-        case SDLK_RETURN: t.controller.skip(); break;
-        case SDLK_p: t.controller.replay(); break;
-        case SDLK_h: t.controller.hint(); break;
-        case SDLK_g: t.setup.settings.aim_guide = !t.setup.settings.aim_guide; break;
-        case SDLK_o:
-            t.rig.set_mode(t.rig.mode() == CameraMode::free ? CameraMode::overhead : CameraMode::free, t.last_camera);
+        case SDLK_LEFT:
+            t.controller.turn_aim(shift ? 0.05 : 0.5);
             break;
-        case SDLK_r: t.panel.confirm_restart = true; break;
-        case SDLK_ESCAPE: t.panel.menu = true; break;
+        case SDLK_RIGHT:
+            t.controller.turn_aim(shift ? -0.05 : -0.5);
+            break;
+        case SDLK_UP:
+            t.set_power(t.controller.aim().power + 0.05);
+            break;
+        case SDLK_DOWN:
+            t.set_power(t.controller.aim().power - 0.05);
+            break;
+        case SDLK_SPACE:
+            t.controller.strike();
+            break;
+        case SDLK_v:
+            t.change_view();
+            break;
+        case SDLK_s:
+        case SDLK_RETURN:
+            t.controller.skip();
+            break;
+        case SDLK_p:
+            t.controller.replay();
+            break;
+        case SDLK_h:
+            t.controller.hint();
+            break;
+        case SDLK_g:
+            t.setup.settings.aim_guide = !t.setup.settings.aim_guide;
+            break;
+        case SDLK_o:
+            t.rig.set_mode(
+                t.rig.mode() == CameraMode::free ? CameraMode::overhead : CameraMode::free,
+                t.last_camera);
+            break;
+        case SDLK_r:
+            t.panel.confirm_restart = true;
+            break;
+        case SDLK_ESCAPE:
+            t.panel.menu = true;
+            break;
         case SDLK_F11: {
             const bool full = (SDL_GetWindowFlags(window) & SDL_WINDOW_FULLSCREEN_DESKTOP) != 0;
             SDL_SetWindowFullscreen(window, full ? 0 : SDL_WINDOW_FULLSCREEN_DESKTOP);
             t.setup.settings.fullscreen = !full;
             break;
         }
-        default: break;
+        default:
+            break;
     }
 }
 
@@ -196,13 +233,16 @@ int run_window(const AppOptions& options) {
     if (!setup) return 2;
     const auto set = [](const char* v) { return std::getenv(v) && *std::getenv(v); };
     if (!set("DISPLAY") && !set("WAYLAND_DISPLAY") && !set("SDL_VIDEODRIVER")) {
-        std::fprintf(stderr, "coolaaber: no display (DISPLAY and WAYLAND_DISPLAY are not set): run it in a desktop "
-                             "session, under a virtual display (xvfb-run -a ./play), or render a picture with "
-                             "--screenshot FILE\n");
+        std::fprintf(
+            stderr,
+            "coolaaber: no display (DISPLAY and WAYLAND_DISPLAY are not set): run it in a desktop "
+            "session, under a virtual display (xvfb-run -a ./play), or render a picture with "
+            "--screenshot FILE\n");
         return 1;
     }
     if (SDL_Init(SDL_INIT_VIDEO | SDL_INIT_TIMER) != 0) {
-        std::fprintf(stderr, "coolaaber: cannot open a window: %s (is a display available? try xvfb-run)\n",
+        std::fprintf(stderr,
+                     "coolaaber: cannot open a window: %s (is a display available? try xvfb-run)\n",
                      SDL_GetError());
         return 1;
     }
@@ -213,8 +253,9 @@ int run_window(const AppOptions& options) {
     const Settings& s0 = setup->settings;
     Uint32 flags = SDL_WINDOW_OPENGL | SDL_WINDOW_RESIZABLE;
     if (s0.fullscreen) flags |= SDL_WINDOW_FULLSCREEN_DESKTOP;
-    SDL_Window* window = SDL_CreateWindow("Coolaaber", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
-                                          s0.window_width, s0.window_height, flags);
+    SDL_Window* window =
+        SDL_CreateWindow("Coolaaber", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
+                         s0.window_width, s0.window_height, flags);
     if (!window) {
         std::fprintf(stderr, "coolaaber: cannot create the window: %s\n", SDL_GetError());
         SDL_Quit();
@@ -222,10 +263,11 @@ int run_window(const AppOptions& options) {
     }
     SDL_GLContext gl = SDL_GL_CreateContext(window);
     if (!gl || epoxy_gl_version() < 33) {
-        std::fprintf(stderr,
-                     "coolaaber: OpenGL 3.3 is needed, but this display offers %s (%s). Update the graphics "
-                     "driver, or run with Mesa's software renderer (LIBGL_ALWAYS_SOFTWARE=1).\n",
-                     gl ? reinterpret_cast<const char*>(glGetString(GL_VERSION)) : "none", SDL_GetError());
+        std::fprintf(
+            stderr,
+            "coolaaber: OpenGL 3.3 is needed, but this display offers %s (%s). Update the graphics "
+            "driver, or run with Mesa's software renderer (LIBGL_ALWAYS_SOFTWARE=1).\n",
+            gl ? reinterpret_cast<const char*>(glGetString(GL_VERSION)) : "none", SDL_GetError());
         if (gl) SDL_GL_DeleteContext(gl);
         SDL_DestroyWindow(window);
         SDL_Quit();
@@ -241,7 +283,8 @@ int run_window(const AppOptions& options) {
         ImGui_ImplOpenGL3_Init("#version 330 core");
         audio::Engine sound;  // no device: silent, one line on stderr
         sound.set_muted(!t.setup.settings.sound);
-        Painter painter(t.controller.session().table(), t.controller.session().config().params.ball_radius);
+        Painter painter(t.controller.session().table(),
+                        t.controller.session().config().params.ball_radius);
         std::optional<StatusFile> status;
         if (options.status_file) status.emplace(*options.status_file);
 
@@ -252,7 +295,8 @@ int run_window(const AppOptions& options) {
         TableInput input(t.controller, t.rig, to_table);
         double mouse_x = 0, mouse_y = 0;
         bool mouse_down[3] = {false, false, false};
-        bool mouse_pressed[3] = {false, false, false};  // a press this frame, even if released again
+        bool mouse_pressed[3] = {false, false,
+                                 false};  // a press this frame, even if released again
         int sound_serial = t.controller.shot_serial();
         int warm_frames = 2;
         long frames = 0;
@@ -265,7 +309,8 @@ int run_window(const AppOptions& options) {
                                    (t.controller.busy() && !t.controller.computer_thinking());
             SDL_Event e;
             bool have = false;
-            if (!animating) have = SDL_WaitEventTimeout(&e, t.controller.computer_thinking() ? 30 : 500) != 0;
+            if (!animating)
+                have = SDL_WaitEventTimeout(&e, t.controller.computer_thinking() ? 30 : 500) != 0;
             bool had_event = false;
             while (have || SDL_PollEvent(&e)) {
                 have = false;
@@ -273,7 +318,9 @@ int run_window(const AppOptions& options) {
                 ImGui_ImplSDL2_ProcessEvent(&e);
                 const bool ui = ImGui::GetIO().WantCaptureMouse;
                 switch (e.type) {
-                    case SDL_QUIT: t.exit_requested = true; break;
+                    case SDL_QUIT:
+                        t.exit_requested = true;
+                        break;
                     case SDL_MOUSEMOTION:
                         mouse_x = e.motion.x;
                         mouse_y = e.motion.y;
@@ -284,10 +331,14 @@ int run_window(const AppOptions& options) {
                         mouse_x = e.button.x;
                         mouse_y = e.button.y;
                         const bool down = e.type == SDL_MOUSEBUTTONDOWN;
-                        const int slot = e.button.button == SDL_BUTTON_LEFT ? 0 : e.button.button == SDL_BUTTON_RIGHT ? 1 : 2;
+                        const int slot = e.button.button == SDL_BUTTON_LEFT    ? 0
+                                         : e.button.button == SDL_BUTTON_RIGHT ? 1
+                                                                               : 2;
                         mouse_down[slot] = down;
                         if (down) mouse_pressed[slot] = true;
-                        const MouseButton b = slot == 0 ? MouseButton::left : slot == 1 ? MouseButton::right : MouseButton::middle;
+                        const MouseButton b = slot == 0   ? MouseButton::left
+                                              : slot == 1 ? MouseButton::right
+                                                          : MouseButton::middle;
                         if (down && !ui && !over_panel(mouse_x)) input.press(b, mouse_x, mouse_y);
                         if (!down) input.release(b, mouse_x, mouse_y);
                         break;
@@ -296,7 +347,8 @@ int run_window(const AppOptions& options) {
                         if (!over_panel(mouse_x)) input.wheel(static_cast<float>(e.wheel.y));
                         break;
                     case SDL_KEYDOWN:
-                        if (!ImGui::GetIO().WantTextInput) on_key(t, window, e.key.keysym.sym, key_shift());
+                        if (!ImGui::GetIO().WantTextInput)
+                            on_key(t, window, e.key.keysym.sym, key_shift());
                         break;
                     case SDL_WINDOWEVENT:
                         if (e.window.event == SDL_WINDOWEVENT_SIZE_CHANGED &&
@@ -305,7 +357,8 @@ int run_window(const AppOptions& options) {
                             t.setup.settings.window_height = e.window.data2;
                         }
                         break;
-                    default: break;
+                    default:
+                        break;
                 }
             }
             warm_frames = had_event ? 3 : std::max(0, warm_frames - 1);
@@ -315,8 +368,9 @@ int run_window(const AppOptions& options) {
             const double dt = std::min(0.1, std::chrono::duration<double>(now - last).count());
             last = now;
             auto signature = [&] {
-                return std::tuple(t.controller.shot_serial(), t.controller.busy(), t.controller.computer_thinking(),
-                                  t.controller.session().phase(), t.controller.session().game_number());
+                return std::tuple(t.controller.shot_serial(), t.controller.busy(),
+                                  t.controller.computer_thinking(), t.controller.session().phase(),
+                                  t.controller.session().game_number());
             };
             const auto before = signature();
             t.controller.update(dt);
@@ -327,7 +381,8 @@ int run_window(const AppOptions& options) {
                 if (t.controller.moving()) sound.start(t.controller.playback().shot());
             }
             sound.set_muted(!t.setup.settings.sound);
-            if (t.controller.moving() && t.controller.playback().time() >= 0.0) sound.update(t.controller.playback().time());
+            if (t.controller.moving() && t.controller.playback().time() >= 0.0)
+                sound.update(t.controller.playback().time());
             const bool redraw = had_event || animating || signature() != before;
             if (!redraw) continue;
 
@@ -346,26 +401,30 @@ int run_window(const AppOptions& options) {
                 mouse_pressed[i] = false;
             }
             ImGui::NewFrame();
-            const PanelActions actions = draw_panel(t.controller, t.setup.settings, t.panel, static_cast<float>(w),
-                                                    static_cast<float>(h), ai_available());
+            const PanelActions actions =
+                draw_panel(t.controller, t.setup.settings, t.panel, static_cast<float>(w),
+                           static_cast<float>(h), ai_available());
             ImGui::Render();
             t.apply(actions);
-            if (!mouse_down[0] && !mouse_down[1] && !mouse_down[2]) t.persist_settings();  // not mid-drag
-            const float aspect = static_cast<float>(painter.view_width()) / static_cast<float>(painter.height());
+            if (!mouse_down[0] && !mouse_down[1] && !mouse_down[2])
+                t.persist_settings();  // not mid-drag
+            const float aspect =
+                static_cast<float>(painter.view_width()) / static_cast<float>(painter.height());
             const render::Camera previous = t.last_camera;
             t.last_camera = t.camera(aspect);
             const bool camera_moving = t.rig.animating() || previous.eye != t.last_camera.eye ||
                                        previous.target != t.last_camera.target;
             sound.set_listener(listener_of(t.last_camera));
-            const SceneFrame scene = build_scene(t.controller, t.setup.settings.aim_guide, input.dragged_to());
+            const SceneFrame scene =
+                build_scene(t.controller, t.setup.settings.aim_guide, input.dragged_to());
             painter.draw_table(scene, t.last_camera, camera_moving);
             painter.show(ImGui::GetDrawData());
             SDL_GL_SwapWindow(window);
             ++frames;
             if (status)
                 status->write(status_json(t.controller, t.setup.settings, t.rig.mode(),
-                                          {t.panel.widgets, frames, scene.cue.has_value(), scene.show_aim,
-                                           scene.ball_in_hand.has_value()}));
+                                          {t.panel.widgets, frames, scene.cue.has_value(),
+                                           scene.show_aim, scene.ball_in_hand.has_value()}));
         }
         t.save_and_close();
         ImGui_ImplOpenGL3_Shutdown();
@@ -387,7 +446,8 @@ int run_screenshot(const AppOptions& options) {
         Table t(std::move(*setup));
         create_imgui();
         ImGui_ImplOpenGL3_Init("#version 330 core");
-        Painter painter(t.controller.session().table(), t.controller.session().config().params.ball_radius);
+        Painter painter(t.controller.session().table(),
+                        t.controller.session().config().params.ball_radius);
         painter.resize(w, h);
         ImGuiIO& io = ImGui::GetIO();
         io.DisplaySize = ImVec2(static_cast<float>(w), static_cast<float>(h));
@@ -396,10 +456,12 @@ int run_screenshot(const AppOptions& options) {
         for (int frame = 0; frame < 2; ++frame) {  // ImGui lays its windows out on the first frame
             ImGui_ImplOpenGL3_NewFrame();
             ImGui::NewFrame();
-            (void)draw_panel(t.controller, t.setup.settings, t.panel, static_cast<float>(w), static_cast<float>(h), ai_available());
+            (void)draw_panel(t.controller, t.setup.settings, t.panel, static_cast<float>(w),
+                             static_cast<float>(h), ai_available());
             ImGui::Render();
         }
-        const float aspect = static_cast<float>(painter.view_width()) / static_cast<float>(painter.height());
+        const float aspect =
+            static_cast<float>(painter.view_width()) / static_cast<float>(painter.height());
         t.rig.update(10.0);
         t.last_camera = t.camera(aspect);
         painter.draw_table(build_scene(t.controller, t.setup.settings.aim_guide), t.last_camera);

@@ -24,8 +24,9 @@ struct AppOptions {
     std::optional<std::array<std::string, 2>> players;  ///< --players human,ai:3
     std::optional<std::uint64_t> seed;                  ///< racks and computer players
     double playback_speed = 1.0;                        ///< 0: every shot jumps to its end
-    std::optional<std::filesystem::path> status_file;   ///< JSON of what the player sees, each change
-    std::optional<double> noise;                        ///< computer players' execution noise scale
+    std::optional<std::filesystem::path>
+        status_file;              ///< JSON of what the player sees, each change
+    std::optional<double> noise;  ///< computer players' execution noise scale
 };
 
 /// Runs the game in a window until Exit; returns the process's exit status.

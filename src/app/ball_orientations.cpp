@@ -6,7 +6,9 @@
 
 namespace app {
 
-BallOrientations::BallOrientations() { reset(); }
+BallOrientations::BallOrientations() {
+    reset();
+}
 
 void BallOrientations::reset() {
     for (std::size_t id = 0; id < q_.size(); ++id)
@@ -32,7 +34,8 @@ void BallOrientations::follow(const physics::Shot& shot, double t, double end) {
     if (steps_ == 0) finished_ = false;
     const long last_full = static_cast<long>(std::floor(end / step));
     const long target = std::min(last_full, static_cast<long>(std::floor(std::min(t, end) / step)));
-    for (; steps_ < target; ++steps_) turn(shot, static_cast<double>(steps_) * step, static_cast<double>(steps_ + 1) * step);
+    for (; steps_ < target; ++steps_)
+        turn(shot, static_cast<double>(steps_) * step, static_cast<double>(steps_ + 1) * step);
     if (t >= end && !finished_) {
         const double from = static_cast<double>(steps_) * step;
         if (end > from) turn(shot, from, end);

@@ -6,7 +6,6 @@
 #pragma once
 
 #include <array>
-
 #include <glm/gtc/quaternion.hpp>
 
 #include "physics/shot.hpp"
@@ -30,7 +29,7 @@ class BallOrientations {
     void turn(const physics::Shot& shot, double t0, double t1);
 
     std::array<glm::dquat, 16> q_;
-    long steps_ = 0;        ///< grid steps of the current shot done
+    long steps_ = 0;         ///< grid steps of the current shot done
     bool finished_ = false;  ///< the last partial step to the end is done
 };
 

@@ -24,17 +24,25 @@ void CameraRig::next_view(const render::Camera& current) {
     set_mode(mode_ == CameraMode::overhead ? CameraMode::cue_ball : CameraMode::overhead, current);
 }
 
-void CameraRig::set_anchor(glm::vec2 cue_ball, float heading, bool jump, const render::Camera& current) {
-    if (jump && mode_ == CameraMode::cue_ball && glm::distance(cue_ball, cue_) > 1e-3f) begin_blend(current);
+void CameraRig::set_anchor(glm::vec2 cue_ball, float heading, bool jump,
+                           const render::Camera& current) {
+    if (jump && mode_ == CameraMode::cue_ball && glm::distance(cue_ball, cue_) > 1e-3f)
+        begin_blend(current);
     cue_ = cue_ball;
     heading_ = heading;
 }
 
 void CameraRig::zoom(float steps) {
     switch (mode_) {
-        case CameraMode::overhead: overhead_zoom_ = std::clamp(overhead_zoom_ * std::pow(1.15f, steps), 1.0f, 4.0f); break;
-        case CameraMode::cue_ball: cue_distance_ = std::clamp(cue_distance_ * std::pow(0.87f, steps), 0.3f, 2.5f); break;
-        case CameraMode::free: orbit_distance_ = std::clamp(orbit_distance_ * std::pow(0.87f, steps), 0.5f, 6.0f); break;
+        case CameraMode::overhead:
+            overhead_zoom_ = std::clamp(overhead_zoom_ * std::pow(1.15f, steps), 1.0f, 4.0f);
+            break;
+        case CameraMode::cue_ball:
+            cue_distance_ = std::clamp(cue_distance_ * std::pow(0.87f, steps), 0.3f, 2.5f);
+            break;
+        case CameraMode::free:
+            orbit_distance_ = std::clamp(orbit_distance_ * std::pow(0.87f, steps), 0.5f, 6.0f);
+            break;
     }
 }
 
@@ -45,7 +53,8 @@ void CameraRig::orbit(float dx, float dy) {
 }
 
 void CameraRig::update(double dt) {
-    if (blend_ < 1.0f) blend_ = std::min(1.0f, blend_ + static_cast<float>(dt) / transition_seconds);
+    if (blend_ < 1.0f)
+        blend_ = std::min(1.0f, blend_ + static_cast<float>(dt) / transition_seconds);
 }
 
 render::Camera CameraRig::target_camera(const physics::Table& table, float aspect) const {
@@ -56,9 +65,11 @@ render::Camera CameraRig::target_camera(const physics::Table& table, float aspec
             return c;
         }
         case CameraMode::cue_ball:
-            return render::cue_ball_camera(cue_, heading_, cue_distance_, 0.12f + 0.21f * cue_distance_);
+            return render::cue_ball_camera(cue_, heading_, cue_distance_,
+                                           0.12f + 0.21f * cue_distance_);
         case CameraMode::free: {
-            const glm::vec3 centre{static_cast<float>(table.length()) / 2, static_cast<float>(table.width()) / 2, 0.0f};
+            const glm::vec3 centre{static_cast<float>(table.length()) / 2,
+                                   static_cast<float>(table.width()) / 2, 0.0f};
             return render::orbit_camera(centre, yaw_, pitch_, orbit_distance_);
         }
     }

@@ -41,8 +41,8 @@ class CameraRig {
     CameraMode mode_;
     glm::vec2 cue_{0.635f, 0.635f};
     float heading_ = 0.0f;
-    float overhead_zoom_ = 1.0f;   ///< 1: the whole table; larger: closer
-    float cue_distance_ = 0.75f;   ///< (unit: m)
+    float overhead_zoom_ = 1.0f;  ///< 1: the whole table; larger: closer
+    float cue_distance_ = 0.75f;  ///< (unit: m)
     float yaw_ = 0.9f, pitch_ = 0.75f, orbit_distance_ = 2.6f;  ///< free view (unit: rad, m)
     render::Camera from_;
     float blend_ = 1.0f;  ///< 0 → 1 over a transition

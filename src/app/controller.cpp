@@ -41,18 +41,26 @@ bool calls_count(const game::Session& s) {
 }  // namespace
 
 Controller::Controller(game::Session session, ControllerOptions options)
-    : session_(std::move(session)), options_(std::move(options)), noise_rng_(derive(options_.seed, 7)) {
-    for (std::size_t i = 0; i < 2; ++i) computers_[i] = make_computer(options_.players[i], derive(options_.seed, i), options_.noise);
+    : session_(std::move(session)),
+      options_(std::move(options)),
+      noise_rng_(derive(options_.seed, 7)) {
+    for (std::size_t i = 0; i < 2; ++i)
+        computers_[i] =
+            make_computer(options_.players[i], derive(options_.seed, i), options_.noise);
     begin_turn();
 }
 
-Controller::~Controller() { stop_thinking(); }
+Controller::~Controller() {
+    stop_thinking();
+}
 
 void Controller::replace(game::Session session, ControllerOptions options) {
     stop_thinking();
     session_ = std::move(session);
     options_ = std::move(options);
-    for (std::size_t i = 0; i < 2; ++i) computers_[i] = make_computer(options_.players[i], derive(options_.seed, i), options_.noise);
+    for (std::size_t i = 0; i < 2; ++i)
+        computers_[i] =
+            make_computer(options_.players[i], derive(options_.seed, i), options_.noise);
     noise_rng_ = physics::SplitMix64(derive(options_.seed, 7));
     playback_.clear();
     orientations_.reset();
@@ -75,13 +83,16 @@ physics::Stroke Controller::stroke_of(const Aim& a) const {
 std::vector<physics::BallState> Controller::balls_now() const {
     if (playback_.moving()) {
         std::vector<physics::BallState> out = playback_.states();
-        std::erase_if(out, [](const physics::BallState& b) { return b.motion == physics::Motion::pocketed; });
+        std::erase_if(
+            out, [](const physics::BallState& b) { return b.motion == physics::Motion::pocketed; });
         return out;
     }
     return session_.balls();
 }
 
-bool Controller::busy() const { return playback_.moving() || thinking_.valid() || computer_decision_.has_value(); }
+bool Controller::busy() const {
+    return playback_.moving() || thinking_.valid() || computer_decision_.has_value();
+}
 
 bool Controller::human_to_act() const {
     if (busy() || !settled_) return false;
@@ -230,7 +241,8 @@ void Controller::finish_shot() {
 
 void Controller::update(double dt) {
     if (playback_.moving()) {
-        playback_.advance(options_.playback_speed > 0.0 ? dt * options_.playback_speed : playback_.end());
+        playback_.advance(options_.playback_speed > 0.0 ? dt * options_.playback_speed
+                                                        : playback_.end());
         orientations_.follow(playback_.shot(), playback_.time(), playback_.end());
         if (!playback_.moving() && !settled_) finish_shot();
         return;
@@ -245,8 +257,10 @@ void Controller::update(double dt) {
             hinting_ = false;
             return;
         }
-        if (hinting_) apply_hint(d);
-        else apply_computer(d);
+        if (hinting_)
+            apply_hint(d);
+        else
+            apply_computer(d);
         return;
     }
     if (computer_decision_) {
@@ -261,7 +275,8 @@ void Controller::update(double dt) {
 
 void Controller::hint() {
     if (!human_to_act() || session_.phase() != game::Phase::shoot || !ai_available()) return;
-    hint_player_ = make_computer("ai:5", derive(options_.seed, 100 + static_cast<std::uint64_t>(hints_++)), options_.noise);
+    hint_player_ = make_computer(
+        "ai:5", derive(options_.seed, 100 + static_cast<std::uint64_t>(hints_++)), options_.noise);
     game::Player* player = hint_player_.get();
     const game::Session* s = &session_;
     hinting_ = true;
@@ -277,7 +292,8 @@ void Controller::apply_hint(const game::Decision& d) {
             // keep the cue ball where the player put it
         }
     }
-    aim_ = human_aim_ = Aim{d.stroke.heading_deg, power_of_speed(d.stroke.speed), d.stroke.side, d.stroke.top, d.stroke.elevation_deg};
+    aim_ = human_aim_ = Aim{d.stroke.heading_deg, power_of_speed(d.stroke.speed), d.stroke.side,
+                            d.stroke.top, d.stroke.elevation_deg};
     if (d.call.is_ball() || d.call.is_safety()) manual_call_ = d.call;
     refresh_preview();
 }
@@ -314,7 +330,8 @@ void Controller::apply_computer(const game::Decision& d) {
         refusal_ = std::string("the computer player's decision was refused: ") + e.what();
         return;
     }
-    aim_ = Aim{d.stroke.heading_deg, power_of_speed(d.stroke.speed), d.stroke.side, d.stroke.top, d.stroke.elevation_deg};
+    aim_ = Aim{d.stroke.heading_deg, power_of_speed(d.stroke.speed), d.stroke.side, d.stroke.top,
+               d.stroke.elevation_deg};
     refresh_preview();
     computer_decision_ = d;
     computer_aim_left_ = options_.computer_aim_seconds;
@@ -322,7 +339,9 @@ void Controller::apply_computer(const game::Decision& d) {
 
 // ---- Human actions
 
-void Controller::turn_aim(double delta_deg) { set_heading(aim_.heading_deg + delta_deg); }
+void Controller::turn_aim(double delta_deg) {
+    set_heading(aim_.heading_deg + delta_deg);
+}
 
 void Controller::set_heading(double deg) {
     if (!human_to_act()) return;
@@ -375,7 +394,9 @@ void Controller::click_table(physics::Vec2 pos) {
             refusal_ = fmt::format("the {} is not a ball you may call now", id);
             return;
         }
-        const int pocket = now.is_ball() ? now.pocket : preview_ && preview_->pocket ? *preview_->pocket : 0;
+        const int pocket = now.is_ball()                  ? now.pocket
+                           : preview_ && preview_->pocket ? *preview_->pocket
+                                                          : 0;
         manual_call_ = rules::Call::ball_in(id, pocket);
         refusal_.clear();
         return;
@@ -383,7 +404,8 @@ void Controller::click_table(physics::Vec2 pos) {
     for (const physics::Pocket& p : session_.table().pockets) {
         if (physics::norm(p.centre - pos) > 0.12) continue;
         const std::optional<int> ball = now.is_ball() ? std::optional<int>(now.ball)
-                                                      : preview_ ? preview_->first_ball : std::nullopt;
+                                        : preview_    ? preview_->first_ball
+                                                      : std::nullopt;
         if (!ball || std::find(legal.begin(), legal.end(), *ball) == legal.end()) {
             refusal_ = "click the ball to call first, then the pocket";
             return;
@@ -398,7 +420,9 @@ void Controller::call_safety() {
     if (human_to_act() && calls_count(session_)) manual_call_ = rules::Call::safety();
 }
 
-void Controller::clear_call() { manual_call_.reset(); }
+void Controller::clear_call() {
+    manual_call_.reset();
+}
 
 void Controller::set_push_out(bool declare) {
     if (!human_to_act()) return;

@@ -35,9 +35,9 @@ struct Aim {
 
 struct ControllerOptions {
     std::array<std::string, 2> players{"human", "human"};  ///< seat kinds (seats.hpp)
-    double noise = 1.0;             ///< execution-noise scale for computer players
-    std::uint64_t seed = 1;         ///< computer players' and noise streams
-    double playback_speed = 1.0;    ///< shot time per real second; 0: every shot skips to its end
+    double noise = 1.0;           ///< execution-noise scale for computer players
+    std::uint64_t seed = 1;       ///< computer players' and noise streams
+    double playback_speed = 1.0;  ///< shot time per real second; 0: every shot skips to its end
     double computer_aim_seconds = 0.9;  ///< how long the computer's aim is shown before it strikes
 };
 
@@ -95,7 +95,9 @@ class Controller {
     const std::string& refusal() const { return refusal_; }
     /// Increments when a new shot starts playing (the app starts its sound then).
     int shot_serial() const { return shot_serial_; }
-    const std::string& seat_kind(rules::Player p) const { return options_.players[rules::index(p)]; }
+    const std::string& seat_kind(rules::Player p) const {
+        return options_.players[rules::index(p)];
+    }
     physics::Stroke stroke_of(const Aim& aim) const;
 
     // ---- Human actions (ignored when it is not a human's turn; refusals go to refusal())
@@ -107,7 +109,9 @@ class Controller {
     /// Moves the cue ball in hand to `pos`; false (and refusal()) when it may not go there.
     bool move_cue_ball(physics::Vec2 pos);
     /// Why the cue ball in hand may not go to `pos`, or empty.
-    std::optional<std::string> check_cue_ball(physics::Vec2 pos) const { return session_.check_cue_ball(pos); }
+    std::optional<std::string> check_cue_ball(physics::Vec2 pos) const {
+        return session_.check_cue_ball(pos);
+    }
     /// A click on the table at `pos` (unit: m): on an object ball, calls it; near a pocket,
     /// calls that pocket (for the called ball, or the proposed one).
     void click_table(physics::Vec2 pos);
@@ -157,8 +161,8 @@ class Controller {
     bool hinting_ = false;                             ///< thinking_ is a hint for the human
     int hints_ = 0;
     double computer_aim_left_ = 0.0;
-    bool settled_ = true;   ///< the last shot's playback has reached its end and been taken in
-    int dry_shots_ = 0;     ///< computer-only games: shots with no ball down (stalemate rule)
+    bool settled_ = true;  ///< the last shot's playback has reached its end and been taken in
+    int dry_shots_ = 0;    ///< computer-only games: shots with no ball down (stalemate rule)
     std::string last_words_;
     std::vector<std::string> info_at_strike_;  ///< info() while the last shot plays
     std::string refusal_;

@@ -55,8 +55,9 @@ GameSetup set_up_game(const AppOptions& o) {
             return g;
         } catch (const game::LoadError& e) {
             const std::filesystem::path aside = keep_aside(g.autosave_path);
-            g.notice += fmt::format("{}The saved game could not be resumed ({}); it was kept as {}.",
-                                    g.notice.empty() ? "" : "\n", e.what(), aside.string());
+            g.notice +=
+                fmt::format("{}The saved game could not be resumed ({}); it was kept as {}.",
+                            g.notice.empty() ? "" : "\n", e.what(), aside.string());
         }
     }
     g.session.emplace(new_game_config(s, seed));

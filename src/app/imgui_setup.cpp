@@ -30,6 +30,8 @@ void create_imgui() {
     if (std::filesystem::exists(font, ec)) io.Fonts->AddFontFromFileTTF(font, 15.0f);
 }
 
-void destroy_imgui() { ImGui::DestroyContext(); }
+void destroy_imgui() {
+    ImGui::DestroyContext();
+}
 
 }  // namespace app

@@ -14,16 +14,20 @@ void TableInput::press(MouseButton b, double x, double y) {
     start_y_ = last_y_ = y;
     moved_ = false;
     switch (b) {
-        case MouseButton::right: drag_ = Drag::aim_and_strike; break;
-        case MouseButton::middle: drag_ = Drag::orbit; break;
+        case MouseButton::right:
+            drag_ = Drag::aim_and_strike;
+            break;
+        case MouseButton::middle:
+            drag_ = Drag::orbit;
+            break;
         case MouseButton::left: {
             drag_ = Drag::aim;
             if (c_.human_to_act() && c_.session().ball_in_hand() != rules::BallInHand::none) {
                 const auto cue = c_.session().state().positions.find(0);
                 const std::optional<physics::Vec2> p = to_table_(x, y);
                 const double R = c_.session().config().params.ball_radius;
-                if (p && cue != c_.session().state().positions.end() && physics::norm(*p - cue->second) < 2.0 * R)
-                {
+                if (p && cue != c_.session().state().positions.end() &&
+                    physics::norm(*p - cue->second) < 2.0 * R) {
                     drag_ = Drag::cue_ball;
                     dragged_to_ = p;
                 }
@@ -39,7 +43,8 @@ void TableInput::motion(double x, double y, bool shift) {
     last_y_ = y;
     if (std::hypot(x - start_x_, y - start_y_) > click_slop) moved_ = true;
     switch (drag_) {
-        case Drag::none: break;
+        case Drag::none:
+            break;
         case Drag::aim_and_strike:
         case Drag::aim:
             // Mouse to the right turns the aim to the right (clockwise seen from above).
@@ -49,7 +54,9 @@ void TableInput::motion(double x, double y, bool shift) {
             dragged_to_ = to_table_(x, y);
             if (dragged_to_) c_.move_cue_ball(*dragged_to_);
             break;
-        case Drag::orbit: rig_.orbit(static_cast<float>(dx), static_cast<float>(dy)); break;
+        case Drag::orbit:
+            rig_.orbit(static_cast<float>(dx), static_cast<float>(dy));
+            break;
     }
 }
 

@@ -39,7 +39,9 @@ class TableInput {
     /// The cue ball in hand is being moved, and where it would go (for the legal/illegal look).
     bool moving_cue_ball() const { return drag_ == Drag::cue_ball; }
     /// While the cue ball in hand is dragged: the point under the mouse, legal or not.
-    std::optional<physics::Vec2> dragged_to() const { return drag_ == Drag::cue_ball ? dragged_to_ : std::nullopt; }
+    std::optional<physics::Vec2> dragged_to() const {
+        return drag_ == Drag::cue_ball ? dragged_to_ : std::nullopt;
+    }
 
     AimSensitivity sensitivity;
 

@@ -1,8 +1,8 @@
 #include "app/painter.hpp"
 
+#include <backends/imgui_impl_opengl3.h>
 #include <epoxy/gl.h>
 #include <imgui.h>
-#include <backends/imgui_impl_opengl3.h>
 
 #include <algorithm>
 
@@ -23,10 +23,14 @@ void Painter::resize(int width, int height) {
     picture_.reset();
 }
 
-int Painter::view_width() const { return std::max(16, width_ - static_cast<int>(panel_width)); }
+int Painter::view_width() const {
+    return std::max(16, width_ - static_cast<int>(panel_width));
+}
 
-void Painter::draw_table(const SceneFrame& scene, const render::Camera& camera, bool camera_moving) {
-    if (camera_moving && !moving_) moving_ = std::make_unique<render::OffscreenTarget>(view_width(), height_, 1);
+void Painter::draw_table(const SceneFrame& scene, const render::Camera& camera,
+                         bool camera_moving) {
+    if (camera_moving && !moving_)
+        moving_ = std::make_unique<render::OffscreenTarget>(view_width(), height_, 1);
     render::OffscreenTarget& target = camera_moving ? *moving_ : *view_;
     target.bind();
     renderer_.draw(scene.view(camera), view_width(), height_);
@@ -39,7 +43,8 @@ void Painter::compose(unsigned table_image, ImDrawData* panel) const {
     glViewport(0, 0, width_, height_);
     glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
-    glBlitFramebuffer(0, 0, view_width(), height_, 0, 0, view_width(), height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBlitFramebuffer(0, 0, view_width(), height_, 0, 0, view_width(), height_, GL_COLOR_BUFFER_BIT,
+                      GL_NEAREST);
     if (panel) ImGui_ImplOpenGL3_RenderDrawData(panel);
 }
 

@@ -21,7 +21,8 @@ class Painter {
     /// (`camera_moving`: aiming in the cue-ball view, a transition) the view is drawn without
     /// multisampling, which on a software renderer more than doubles the frame rate; a still
     /// camera gets 4× MSAA (and the renderer's cached table).
-    void draw_table(const SceneFrame& scene, const render::Camera& camera, bool camera_moving = false);
+    void draw_table(const SceneFrame& scene, const render::Camera& camera,
+                    bool camera_moving = false);
     /// Shows the table view and the panel in the window's framebuffer (then swap).
     void show(ImDrawData* panel);
     /// The table view and the panel as an image (the offscreen screenshot).
@@ -35,8 +36,9 @@ class Painter {
     void compose(unsigned table_image, ImDrawData* panel) const;
 
     render::Renderer renderer_;
-    std::unique_ptr<render::OffscreenTarget> view_;     ///< the table, multisampled
-    std::unique_ptr<render::OffscreenTarget> moving_;   ///< the table while the camera moves, 1 sample
+    std::unique_ptr<render::OffscreenTarget> view_;  ///< the table, multisampled
+    std::unique_ptr<render::OffscreenTarget>
+        moving_;  ///< the table while the camera moves, 1 sample
     std::unique_ptr<render::OffscreenTarget> picture_;  ///< capture(): the whole window
     int width_ = 0, height_ = 0;
 };

@@ -41,7 +41,8 @@ std::optional<std::pair<double, double>> spin_picker(double side, double top, bo
     dl->AddCircle(centre, r * 0.5f, IM_COL32(200, 60, 60, 90), 48, 1.0f);  // the miscue limit
     dl->AddLine({centre.x - r, centre.y}, {centre.x + r, centre.y}, IM_COL32(0, 0, 0, 40));
     dl->AddLine({centre.x, centre.y - r}, {centre.x, centre.y + r}, IM_COL32(0, 0, 0, 40));
-    const ImVec2 dot{centre.x + static_cast<float>(side) * r, centre.y - static_cast<float>(top) * r};
+    const ImVec2 dot{centre.x + static_cast<float>(side) * r,
+                     centre.y - static_cast<float>(top) * r};
     dl->AddCircleFilled(dot, 5.0f, IM_COL32(30, 80, 200, 255), 16);
     if (enabled && ImGui::IsItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
         const ImVec2 m = ImGui::GetIO().MousePos;
@@ -93,13 +94,15 @@ void new_game_dialog(PanelState& st, PanelActions& out, bool ai_available) {
         char buf[41];
         std::snprintf(buf, sizeof buf, "%s", d.names[static_cast<std::size_t>(i)].c_str());
         ImGui::SetNextItemWidth(150);
-        if (ImGui::InputText("##name", buf, sizeof buf) && buf[0] != '\0') d.names[static_cast<std::size_t>(i)] = buf;
+        if (ImGui::InputText("##name", buf, sizeof buf) && buf[0] != '\0')
+            d.names[static_cast<std::size_t>(i)] = buf;
         ImGui::SameLine();
         ImGui::SetNextItemWidth(130);
         const std::string& current = d.players[static_cast<std::size_t>(i)];
         if (ImGui::BeginCombo("##kind", seat_words(current).c_str())) {
             for (const std::string& k : kinds) {
-                if (ImGui::Selectable(seat_words(k).c_str(), k == current)) d.players[static_cast<std::size_t>(i)] = k;
+                if (ImGui::Selectable(seat_words(k).c_str(), k == current))
+                    d.players[static_cast<std::size_t>(i)] = k;
             }
             ImGui::EndCombo();
         }
@@ -120,7 +123,8 @@ void new_game_dialog(PanelState& st, PanelActions& out, bool ai_available) {
         o.eight_on_break = wins ? rules::EightOnBreak::wins : rules::EightOnBreak::spot_or_rebreak;
         bool kitchen = o.foul_ball_in_hand == rules::FoulBallInHand::kitchen;
         ImGui::Checkbox("Ball in hand after a foul: kitchen only", &kitchen);
-        o.foul_ball_in_hand = kitchen ? rules::FoulBallInHand::kitchen : rules::FoulBallInHand::anywhere;
+        o.foul_ball_in_hand =
+            kitchen ? rules::FoulBallInHand::kitchen : rules::FoulBallInHand::anywhere;
         ImGui::Checkbox("Scratch on the 8 loses", &o.scratch_on_eight_loses);
         ImGui::Checkbox("Groups decided on the break", &o.groups_on_break);
         ImGui::Checkbox("Rail after contact required", &o.rail_after_contact);
@@ -139,8 +143,8 @@ void new_game_dialog(PanelState& st, PanelActions& out, bool ai_available) {
 
 }  // namespace
 
-PanelActions draw_panel(const Controller& c, const Settings& settings, PanelState& st, float width, float height,
-                        bool ai_available) {
+PanelActions draw_panel(const Controller& c, const Settings& settings, PanelState& st, float width,
+                        float height, bool ai_available) {
     PanelActions out;
     st.widgets.clear();
     const game::Session& s = c.session();
@@ -151,7 +155,8 @@ PanelActions draw_panel(const Controller& c, const Settings& settings, PanelStat
                      ImGuiWindowFlags_NoTitleBar);
     ImGui::TextColored(accent, "COOLAABER");
     ImGui::SameLine();
-    ImGui::TextDisabled("%s  game %d", s.config().game == rules::Game::eight_ball ? "8-ball" : "9-ball",
+    ImGui::TextDisabled("%s  game %d",
+                        s.config().game == rules::Game::eight_ball ? "8-ball" : "9-ball",
                         s.game_number() + 1);
     if (!st.notice.empty()) {
         ImGui::PushTextWrapPos(0.0f);
@@ -171,8 +176,10 @@ PanelActions draw_panel(const Controller& c, const Settings& settings, PanelStat
     remember(st, "Sound");
     if (full_button(st, "Change View")) out.change_view = true;
     if (full_button(st, "Restart")) {
-        if (s.history().empty() || s.phase() == game::Phase::game_over) out.restart = true;
-        else st.confirm_restart = true;
+        if (s.history().empty() || s.phase() == game::Phase::game_over)
+            out.restart = true;
+        else
+            st.confirm_restart = true;
     }
     if (full_button(st, "Exit")) out.exit = true;
 
@@ -181,8 +188,10 @@ PanelActions draw_panel(const Controller& c, const Settings& settings, PanelStat
     ImGui::PushTextWrapPos(0.0f);
     const std::vector<std::string> lines = c.info();
     for (std::size_t i = 0; i < lines.size(); ++i) {
-        if (i == 0) ImGui::TextColored(accent, "%s", lines[i].c_str());
-        else ImGui::TextUnformatted(lines[i].c_str());
+        if (i == 0)
+            ImGui::TextColored(accent, "%s", lines[i].c_str());
+        else
+            ImGui::TextUnformatted(lines[i].c_str());
     }
     if (c.computer_thinking()) ImGui::TextDisabled("(thinking...)");
     if (!c.last_shot_words().empty()) ImGui::TextDisabled("%s", c.last_shot_words().c_str());
@@ -206,13 +215,14 @@ PanelActions draw_panel(const Controller& c, const Settings& settings, PanelStat
     float elevation = static_cast<float>(c.aim().elevation_deg);
     ImGui::Text("Cue elevation");
     ImGui::SetNextItemWidth(-1.0f);
-    if (ImGui::SliderFloat("##elevation", &elevation, 0.0f, 60.0f, "%.0f deg")) out.elevation_deg = elevation;
+    if (ImGui::SliderFloat("##elevation", &elevation, 0.0f, 60.0f, "%.0f deg"))
+        out.elevation_deg = elevation;
     if (s.push_out_available() && mine) {
         bool push = s.state().shot == rules::Shot::push_out;
         if (ImGui::Checkbox("Push-out", &push)) out.push_out = push;
     }
-    if (s.config().game == rules::Game::eight_ball && s.state().shot != rules::Shot::break_shot && mine &&
-        s.phase() == game::Phase::shoot) {
+    if (s.config().game == rules::Game::eight_ball && s.state().shot != rules::Shot::break_shot &&
+        mine && s.phase() == game::Phase::shoot) {
         if (ImGui::Button("Call safety")) out.call_safety = true;
         if (c.call_is_manual()) {
             ImGui::SameLine();

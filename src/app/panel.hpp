@@ -49,7 +49,7 @@ struct PanelState {
     bool menu = false;             ///< the Esc menu
     bool new_game_open = false;
     NewGame draft;
-    std::string notice;            ///< a message shown once at the top (e.g. a bad settings file)
+    std::string notice;  ///< a message shown once at the top (e.g. a bad settings file)
     /// Where each labelled widget was drawn last frame (unit: px, window frame: x0, y0, x1, y1),
     /// for the status file that end-to-end tests click by.
     std::map<std::string, std::array<float, 4>> widgets;

@@ -1,13 +1,12 @@
 #include "app/picking.hpp"
 
 #include <cmath>
-
 #include <glm/gtc/matrix_inverse.hpp>
 
 namespace app {
 
-std::optional<physics::Vec2> table_point(const render::Camera& camera, int width, int height, double x, double y,
-                                         double z) {
+std::optional<physics::Vec2> table_point(const render::Camera& camera, int width, int height,
+                                         double x, double y, double z) {
     if (width <= 0 || height <= 0) return std::nullopt;
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
     const glm::mat4 inv = glm::inverse(camera.projection(aspect) * camera.view());

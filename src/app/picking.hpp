@@ -11,7 +11,7 @@ namespace app {
 
 /// Pixel (x, y) of a `width` × `height` view (origin top left) seen through `camera`; the
 /// point at height `z` (unit: m) where its ray meets that plane, or empty when it points away.
-std::optional<physics::Vec2> table_point(const render::Camera& camera, int width, int height, double x, double y,
-                                         double z);
+std::optional<physics::Vec2> table_point(const render::Camera& camera, int width, int height,
+                                         double x, double y, double z);
 
 }  // namespace app

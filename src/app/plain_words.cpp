@@ -10,15 +10,24 @@ namespace app {
 std::string foul_words(rules::Foul f) {
     using F = rules::Foul;
     switch (f) {
-        case F::scratch: return "the cue ball went into a pocket";
-        case F::cue_ball_off_table: return "the cue ball left the table";
-        case F::no_contact: return "the cue ball hit no ball";
-        case F::wrong_ball_first: return "the first ball hit was not a legal one";
-        case F::no_rail_after_contact: return "no ball reached a cushion after the contact";
-        case F::ball_off_table: return "a ball left the table";
-        case F::bad_play_from_kitchen: return "from the kitchen, the cue ball hit a ball in the kitchen first";
-        case F::illegal_break: return "illegal break: fewer than four balls reached a cushion";
-        case F::third_consecutive_foul: return "third foul in a row";
+        case F::scratch:
+            return "the cue ball went into a pocket";
+        case F::cue_ball_off_table:
+            return "the cue ball left the table";
+        case F::no_contact:
+            return "the cue ball hit no ball";
+        case F::wrong_ball_first:
+            return "the first ball hit was not a legal one";
+        case F::no_rail_after_contact:
+            return "no ball reached a cushion after the contact";
+        case F::ball_off_table:
+            return "a ball left the table";
+        case F::bad_play_from_kitchen:
+            return "from the kitchen, the cue ball hit a ball in the kitchen first";
+        case F::illegal_break:
+            return "illegal break: fewer than four balls reached a cushion";
+        case F::third_consecutive_foul:
+            return "third foul in a row";
     }
     return "foul";
 }
@@ -26,25 +35,37 @@ std::string foul_words(rules::Foul f) {
 std::string choice_words(rules::ChoiceOption o) {
     using C = rules::ChoiceOption;
     switch (o) {
-        case C::accept_table: return "Play the table as it lies";
-        case C::rerack_and_break: return "Re-rack, and I break";
-        case C::rerack_offender_breaks: return "Re-rack, the breaker breaks again";
-        case C::spot_8_and_continue: return "Spot the 8 and shoot on";
-        case C::rebreak: return "Re-rack and break";
-        case C::spot_8_with_kitchen_ball_in_hand: return "Spot the 8, shoot from the kitchen";
-        case C::kitchen_ball_in_hand: return "Ball in hand in the kitchen";
-        case C::shoot: return "Shoot from here";
-        case C::pass_back: return "Pass the shot back";
+        case C::accept_table:
+            return "Play the table as it lies";
+        case C::rerack_and_break:
+            return "Re-rack, and I break";
+        case C::rerack_offender_breaks:
+            return "Re-rack, the breaker breaks again";
+        case C::spot_8_and_continue:
+            return "Spot the 8 and shoot on";
+        case C::rebreak:
+            return "Re-rack and break";
+        case C::spot_8_with_kitchen_ball_in_hand:
+            return "Spot the 8, shoot from the kitchen";
+        case C::kitchen_ball_in_hand:
+            return "Ball in hand in the kitchen";
+        case C::shoot:
+            return "Shoot from here";
+        case C::pass_back:
+            return "Pass the shot back";
     }
     return "?";
 }
 
 std::string pocket_words(int pocket) {
-    const bool side = pocket == static_cast<int>(physics::PocketId::S) || pocket == static_cast<int>(physics::PocketId::N);
+    const bool side = pocket == static_cast<int>(physics::PocketId::S) ||
+                      pocket == static_cast<int>(physics::PocketId::N);
     return fmt::format("{} {}", physics::pocket_name(pocket), side ? "side" : "corner");
 }
 
-std::string group_words(rules::Group g) { return g == rules::Group::solids ? "solids (1-7)" : "stripes (9-15)"; }
+std::string group_words(rules::Group g) {
+    return g == rules::Group::solids ? "solids (1-7)" : "stripes (9-15)";
+}
 
 namespace {
 
@@ -57,7 +78,9 @@ std::string ball_list(const std::vector<int>& balls) {
     return out;
 }
 
-int lowest_on_table(const rules::GameState& s) { return s.on_table.empty() ? 0 : *s.on_table.begin(); }
+int lowest_on_table(const rules::GameState& s) {
+    return s.on_table.empty() ? 0 : *s.on_table.begin();
+}
 
 }  // namespace
 
@@ -68,9 +91,12 @@ std::string shot_words(const game::Session& session, const game::ShotRecord& r) 
         if (d.ball != 0) down.push_back(d.ball);
     std::string out;
     if (r.push_out()) out = who + " pushed out. ";
-    if (!down.empty()) out += fmt::format("{} pocketed {}. ", who, ball_list(down));
-    else if (r.before.shot == rules::Shot::break_shot) out += fmt::format("{} broke: nothing dropped. ", who);
-    else if (!r.verdict.foul) out += fmt::format("{} pocketed nothing. ", who);
+    if (!down.empty())
+        out += fmt::format("{} pocketed {}. ", who, ball_list(down));
+    else if (r.before.shot == rules::Shot::break_shot)
+        out += fmt::format("{} broke: nothing dropped. ", who);
+    else if (!r.verdict.foul)
+        out += fmt::format("{} pocketed nothing. ", who);
     if (r.verdict.break_result == rules::BreakResult::illegal) out += "Illegal break. ";
     if (r.verdict.foul) {
         std::string list;
@@ -78,7 +104,8 @@ std::string shot_words(const game::Session& session, const game::ShotRecord& r) 
         out += fmt::format("Foul by {}: {}. ", who, list);
     }
     if (!r.verdict.respot.empty()) out += fmt::format("Spotted: {}. ", ball_list(r.verdict.respot));
-    if (r.verdict.game_over && r.verdict.winner) out += fmt::format("{} wins the game.", session.name(*r.verdict.winner));
+    if (r.verdict.game_over && r.verdict.winner)
+        out += fmt::format("{} wins the game.", session.name(*r.verdict.winner));
     while (!out.empty() && out.back() == ' ') out.pop_back();
     return out;
 }
@@ -90,8 +117,8 @@ std::vector<std::string> info_lines(const game::Session& s, const rules::Call& c
     if (s.phase() == game::Phase::game_over) {
         const rules::Player w = *s.winner();
         lines.push_back(fmt::format("{} wins!", s.name(w)));
-        lines.push_back(fmt::format("Games: {} {} - {} {}", s.name(rules::Player::A), s.score()[0], s.score()[1],
-                                    s.name(rules::Player::B)));
+        lines.push_back(fmt::format("Games: {} {} - {} {}", s.name(rules::Player::A), s.score()[0],
+                                    s.score()[1], s.name(rules::Player::B)));
         lines.push_back("Press Restart for the next game.");
         return lines;
     }
@@ -107,25 +134,36 @@ std::vector<std::string> info_lines(const game::Session& s, const rules::Call& c
     }
     if (eight) {
         if (std::optional<rules::Group> g = st.group(st.shooter))
-            lines.push_back(rules::on_the_eight(st) ? fmt::format("Group: {}, now on the 8", group_words(*g))
-                                                    : fmt::format("Group: {}", group_words(*g)));
+            lines.push_back(rules::on_the_eight(st)
+                                ? fmt::format("Group: {}, now on the 8", group_words(*g))
+                                : fmt::format("Group: {}", group_words(*g)));
         else if (st.shot != rules::Shot::break_shot)
             lines.push_back("Open table: any ball but the 8");
     } else {
         lines.push_back(fmt::format("Ball to hit: the {}", lowest_on_table(st)));
     }
     switch (s.ball_in_hand()) {
-        case rules::BallInHand::anywhere: lines.push_back("Ball in hand: drag the cue ball anywhere"); break;
-        case rules::BallInHand::kitchen: lines.push_back("Ball in hand: drag the cue ball behind the head string"); break;
-        case rules::BallInHand::none: break;
+        case rules::BallInHand::anywhere:
+            lines.push_back("Ball in hand: drag the cue ball anywhere");
+            break;
+        case rules::BallInHand::kitchen:
+            lines.push_back("Ball in hand: drag the cue ball behind the head string");
+            break;
+        case rules::BallInHand::none:
+            break;
     }
     if (eight && st.shot != rules::Shot::break_shot && rules::call_counts(s.config().options, st)) {
-        if (call.is_ball()) lines.push_back(fmt::format("Call: the {} in the {} pocket", call.ball, pocket_words(call.pocket)));
-        else if (call.is_safety()) lines.push_back("Call: safety");
-        else lines.push_back("Call: none (click a ball, then a pocket)");
+        if (call.is_ball())
+            lines.push_back(
+                fmt::format("Call: the {} in the {} pocket", call.ball, pocket_words(call.pocket)));
+        else if (call.is_safety())
+            lines.push_back("Call: safety");
+        else
+            lines.push_back("Call: none (click a ball, then a pocket)");
     }
     if (st.shot == rules::Shot::push_out) lines.push_back("Push-out declared");
-    if (s.warned(st.shooter)) lines.push_back(fmt::format("Warning: {} has two fouls; a third loses the game", who));
+    if (s.warned(st.shooter))
+        lines.push_back(fmt::format("Warning: {} has two fouls; a third loses the game", who));
     return lines;
 }
 

@@ -20,7 +20,10 @@ class Playback {
     void advance(double dt);
     void skip_to_end() { t_ = end(); }
     /// Forgets the shot (a new rack).
-    void clear() { shot_.reset(); t_ = 0.0; }
+    void clear() {
+        shot_.reset();
+        t_ = 0.0;
+    }
 
     bool has_shot() const { return shot_.has_value(); }
     /// A shot is loaded and its balls still move at the playback time.

@@ -8,7 +8,9 @@ namespace app {
 namespace {
 
 // How far the cue is drawn back from the ball at a Power slider position (unit: m).
-float pull_back(double power) { return static_cast<float>(0.015 + 0.22 * power); }
+float pull_back(double power) {
+    return static_cast<float>(0.015 + 0.22 * power);
+}
 
 }  // namespace
 
@@ -23,7 +25,8 @@ render::FrameView SceneFrame::view(const render::Camera& camera) const {
     return v;
 }
 
-SceneFrame build_scene(const Controller& c, bool aim_guide, std::optional<physics::Vec2> dragged_to) {
+SceneFrame build_scene(const Controller& c, bool aim_guide,
+                       std::optional<physics::Vec2> dragged_to) {
     SceneFrame f;
     const double R = c.session().config().params.ball_radius;
     for (const physics::BallState& b : c.balls_now())
@@ -32,7 +35,8 @@ SceneFrame build_scene(const Controller& c, bool aim_guide, std::optional<physic
     const AimPreview* preview = c.preview();
     const bool at_table = c.session().phase() == game::Phase::shoot && !c.moving();
     const auto cue = c.session().state().positions.find(0);
-    if (at_table && preview && cue != c.session().state().positions.end() && !c.computer_thinking()) {
+    if (at_table && preview && cue != c.session().state().positions.end() &&
+        !c.computer_thinking()) {
         const Aim& a = c.aim();
         render::CueView k;
         k.cue_ball = {static_cast<float>(cue->second.x), static_cast<float>(cue->second.y)};
@@ -53,12 +57,14 @@ SceneFrame build_scene(const Controller& c, bool aim_guide, std::optional<physic
             k.cue_ball = {static_cast<float>(at->second.x), static_cast<float>(at->second.y)};
             k.heading = static_cast<float>(r.stroke.heading_deg * std::numbers::pi / 180.0);
             k.elevation = static_cast<float>(r.stroke.elevation_deg * std::numbers::pi / 180.0);
-            k.pull_back = pull_back(power_of_speed(r.stroke.speed)) * static_cast<float>(-c.playback().time() / stroke_lead);
+            k.pull_back = pull_back(power_of_speed(r.stroke.speed)) *
+                          static_cast<float>(-c.playback().time() / stroke_lead);
             f.cue = k;
         }
     }
     const rules::BallInHand in_hand = c.session().ball_in_hand();
-    if (c.human_to_act() && in_hand != rules::BallInHand::none && cue != c.session().state().positions.end()) {
+    if (c.human_to_act() && in_hand != rules::BallInHand::none &&
+        cue != c.session().state().positions.end()) {
         render::BallInHandView h;
         const bool refused = dragged_to && c.check_cue_ball(*dragged_to).has_value();
         const physics::Vec2 at = refused ? *dragged_to : cue->second;

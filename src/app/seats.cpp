@@ -17,7 +17,8 @@ bool ai_available() {
 #endif
 }
 
-std::unique_ptr<game::Player> make_computer(const std::string& kind, std::uint64_t seed, double noise) {
+std::unique_ptr<game::Player> make_computer(const std::string& kind, std::uint64_t seed,
+                                            double noise) {
     if (kind == "human") return nullptr;
     if (kind == "random") return std::make_unique<game::RandomPlayer>(seed);
     if (kind.size() == 4 && kind.rfind("ai:", 0) == 0 && kind[3] >= '1' && kind[3] <= '5') {
@@ -28,7 +29,8 @@ std::unique_ptr<game::Player> make_computer(const std::string& kind, std::uint64
         throw std::invalid_argument("player \"" + kind + "\": this build has no AI (src/ai)");
 #endif
     }
-    throw std::invalid_argument("unknown player \"" + kind + "\" (expected human, random or ai:1 to ai:5)");
+    throw std::invalid_argument("unknown player \"" + kind +
+                                "\" (expected human, random or ai:1 to ai:5)");
 }
 
 }  // namespace app

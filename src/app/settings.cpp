@@ -17,17 +17,24 @@ namespace app {
 namespace {
 
 std::filesystem::path xdg_folder(const char* variable, const char* fallback) {
-    if (const char* v = std::getenv(variable); v && *v) return std::filesystem::path(v) / "coolaaber";
+    if (const char* v = std::getenv(variable); v && *v)
+        return std::filesystem::path(v) / "coolaaber";
     const char* home = std::getenv("HOME");
     return std::filesystem::path(home && *home ? home : ".") / fallback / "coolaaber";
 }
 
-constexpr std::string_view view_name(ViewMode v) { return v == ViewMode::overhead ? "overhead" : "cueball"; }
+constexpr std::string_view view_name(ViewMode v) {
+    return v == ViewMode::overhead ? "overhead" : "cueball";
+}
 
 }  // namespace
 
-std::filesystem::path config_folder() { return xdg_folder("XDG_CONFIG_HOME", ".config"); }
-std::filesystem::path data_folder() { return xdg_folder("XDG_DATA_HOME", ".local/share"); }
+std::filesystem::path config_folder() {
+    return xdg_folder("XDG_CONFIG_HOME", ".config");
+}
+std::filesystem::path data_folder() {
+    return xdg_folder("XDG_DATA_HOME", ".local/share");
+}
 
 bool valid_player_kind(const std::string& kind) {
     if (kind == "human" || kind == "random") return true;
@@ -47,15 +54,16 @@ std::string settings_to_json(const Settings& s) {
     j["players"] = s.players;
     j["noise"] = s.noise;
     j["house_rules"] = game::to_json(s.house_rules);
-    j["window"] = {{"width", s.window_width}, {"height", s.window_height}, {"fullscreen", s.fullscreen}};
+    j["window"] = {
+        {"width", s.window_width}, {"height", s.window_height}, {"fullscreen", s.fullscreen}};
     return j.dump(2) + "\n";
 }
 
 Settings settings_from_json(const std::string& text) {
     const nlohmann::json doc = game::parse_save_document(text, "settings");
     const game::Field f(doc, "settings");
-    f.expect_object({"format", "version"}, {"game", "view", "sound", "power", "aim_guide", "names", "players",
-                                            "noise", "house_rules", "window"});
+    f.expect_object({"format", "version"}, {"game", "view", "sound", "power", "aim_guide", "names",
+                                            "players", "noise", "house_rules", "window"});
     if (f.at("format").string() != "coolaaber-settings")
         f.at("format").fail("not a Coolaaber settings file (expected \"coolaaber-settings\")");
     if (f.at("version").integer_in(1, 1000) != 1)
@@ -64,9 +72,12 @@ Settings settings_from_json(const std::string& text) {
     if (auto g = f.find("game")) s.game = g->name_of<rules::Game>();
     if (auto v = f.find("view")) {
         const std::string name = v->string();
-        if (name == "overhead") s.view = ViewMode::overhead;
-        else if (name == "cueball") s.view = ViewMode::cue_ball;
-        else v->fail("unknown view \"" + name + "\" (expected \"overhead\" or \"cueball\")");
+        if (name == "overhead")
+            s.view = ViewMode::overhead;
+        else if (name == "cueball")
+            s.view = ViewMode::cue_ball;
+        else
+            v->fail("unknown view \"" + name + "\" (expected \"overhead\" or \"cueball\")");
     }
     if (auto v = f.find("sound")) s.sound = v->boolean();
     if (auto v = f.find("power")) s.power = v->number_in(0.0, 1.0);
@@ -75,7 +86,8 @@ Settings settings_from_json(const std::string& text) {
         if (v->array_size() != 2) v->fail("expected two names, e.g. [\"Player 1\", \"Player 2\"]");
         for (std::size_t i = 0; i < 2; ++i) {
             s.names[i] = v->at(i).string();
-            if (s.names[i].empty() || s.names[i].size() > 40) v->at(i).fail("a name has 1 to 40 characters");
+            if (s.names[i].empty() || s.names[i].size() > 40)
+                v->at(i).fail("a name has 1 to 40 characters");
         }
     }
     if (auto v = f.find("players")) {
@@ -83,7 +95,8 @@ Settings settings_from_json(const std::string& text) {
         for (std::size_t i = 0; i < 2; ++i) {
             s.players[i] = v->at(i).string();
             if (!valid_player_kind(s.players[i]))
-                v->at(i).fail("unknown player \"" + s.players[i] + "\" (expected \"human\", \"random\" or \"ai:1\" to \"ai:5\")");
+                v->at(i).fail("unknown player \"" + s.players[i] +
+                              "\" (expected \"human\", \"random\" or \"ai:1\" to \"ai:5\")");
         }
     }
     if (auto v = f.find("noise")) s.noise = v->number_in(0.0, 10.0);
@@ -91,7 +104,8 @@ Settings settings_from_json(const std::string& text) {
     if (auto w = f.find("window")) {
         w->expect_object({}, {"width", "height", "fullscreen"});
         if (auto v = w->find("width")) s.window_width = static_cast<int>(v->integer_in(320, 16384));
-        if (auto v = w->find("height")) s.window_height = static_cast<int>(v->integer_in(240, 16384));
+        if (auto v = w->find("height"))
+            s.window_height = static_cast<int>(v->integer_in(240, 16384));
         if (auto v = w->find("fullscreen")) s.fullscreen = v->boolean();
     }
     return s;
@@ -121,16 +135,19 @@ LoadedSettings load_settings(const std::filesystem::path& path) {
         return {settings_from_json(text), std::nullopt};
     } catch (const game::LoadError& e) {
         const std::filesystem::path aside = keep_aside(path);
-        return {Settings{}, fmt::format("{}: {}; it was kept as {} and the default settings are used",
-                                        path.string(), e.what(),
-                                        aside.empty() ? std::string("(could not rename it)") : aside.string())};
+        return {Settings{},
+                fmt::format("{}: {}; it was kept as {} and the default settings are used",
+                            path.string(), e.what(),
+                            aside.empty() ? std::string("(could not rename it)") : aside.string())};
     }
 }
 
 void save_settings(const std::filesystem::path& path, const Settings& s) {
     std::error_code ec;
     std::filesystem::create_directories(path.parent_path(), ec);
-    if (ec) throw std::runtime_error(fmt::format("cannot create {}: {}", path.parent_path().string(), ec.message()));
+    if (ec)
+        throw std::runtime_error(
+            fmt::format("cannot create {}: {}", path.parent_path().string(), ec.message()));
     game::write_file_atomically(path, settings_to_json(s));
 }
 

@@ -20,15 +20,15 @@ struct Settings {
     rules::Game game = rules::Game::eight_ball;
     ViewMode view = ViewMode::overhead;
     bool sound = true;
-    double power = 0.45;       ///< the Power slider (unit: 0–1 of the strongest stroke)
+    double power = 0.45;  ///< the Power slider (unit: 0–1 of the strongest stroke)
     bool aim_guide = true;
     std::array<std::string, 2> names{"Player 1", "Player 2"};
     /// Who plays each seat: "human", "random", or "ai:1" … "ai:5".
     std::array<std::string, 2> players{"human", "human"};
-    double noise = 1.0;        ///< execution-noise scale for computer players (unit: 1)
+    double noise = 1.0;  ///< execution-noise scale for computer players (unit: 1)
     rules::Options house_rules;
-    int window_width = 1280;   ///< (unit: px)
-    int window_height = 720;   ///< (unit: px)
+    int window_width = 1280;  ///< (unit: px)
+    int window_height = 720;  ///< (unit: px)
     bool fullscreen = false;
 
     friend bool operator==(const Settings&, const Settings&) = default;

@@ -11,26 +11,34 @@ namespace {
 
 const char* phase_name(game::Phase p) {
     switch (p) {
-        case game::Phase::place_cue_ball: return "place_cue_ball";
-        case game::Phase::shoot: return "shoot";
-        case game::Phase::choose: return "choose";
-        case game::Phase::game_over: return "game_over";
+        case game::Phase::place_cue_ball:
+            return "place_cue_ball";
+        case game::Phase::shoot:
+            return "shoot";
+        case game::Phase::choose:
+            return "choose";
+        case game::Phase::game_over:
+            return "game_over";
     }
     return "?";
 }
 
 const char* view_name(CameraMode m) {
     switch (m) {
-        case CameraMode::overhead: return "overhead";
-        case CameraMode::cue_ball: return "cueball";
-        case CameraMode::free: return "free";
+        case CameraMode::overhead:
+            return "overhead";
+        case CameraMode::cue_ball:
+            return "cueball";
+        case CameraMode::free:
+            return "free";
     }
     return "?";
 }
 
 }  // namespace
 
-std::string status_json(const Controller& c, const Settings& s, CameraMode view, const FrameFacts& frame) {
+std::string status_json(const Controller& c, const Settings& s, CameraMode view,
+                        const FrameFacts& frame) {
     const game::Session& session = c.session();
     nlohmann::ordered_json j;
     j["phase"] = phase_name(session.phase());
@@ -46,15 +54,18 @@ std::string status_json(const Controller& c, const Settings& s, CameraMode view,
     j["info"] = c.info();
     j["last_shot"] = c.last_shot_words();
     j["refusal"] = c.refusal();
-    j["winner"] = session.winner() ? nlohmann::ordered_json(session.name(*session.winner())) : nlohmann::ordered_json(nullptr);
+    j["winner"] = session.winner() ? nlohmann::ordered_json(session.name(*session.winner()))
+                                   : nlohmann::ordered_json(nullptr);
     j["heading_deg"] = c.aim().heading_deg;
     const auto cue = session.state().positions.find(0);
-    j["cue_ball"] = cue != session.state().positions.end() ? nlohmann::ordered_json::array({cue->second.x, cue->second.y})
-                                                           : nlohmann::ordered_json(nullptr);
+    j["cue_ball"] = cue != session.state().positions.end()
+                        ? nlohmann::ordered_json::array({cue->second.x, cue->second.y})
+                        : nlohmann::ordered_json(nullptr);
     j["balls_on_table"] = session.state().on_table.size();
     j["widgets"] = frame.widgets;
     j["frames"] = frame.frames;
-    j["drawn"] = {{"cue", frame.cue}, {"aim_guide", frame.aim_guide}, {"ball_in_hand", frame.ball_in_hand}};
+    j["drawn"] = {
+        {"cue", frame.cue}, {"aim_guide", frame.aim_guide}, {"ball_in_hand", frame.ball_in_hand}};
     return j.dump() + "\n";
 }
 

@@ -18,13 +18,14 @@ namespace app {
 /// What the last frame showed, beside the controller's state.
 struct FrameFacts {
     std::map<std::string, std::array<float, 4>> widgets;  ///< PanelState::widgets
-    long frames = 0;           ///< frames drawn so far (for measuring the frame rate)
-    bool cue = false;          ///< the cue stick was drawn
-    bool aim_guide = false;    ///< the aim guide was drawn
-    bool ball_in_hand = false; ///< the ball-in-hand marker was drawn
+    long frames = 0;            ///< frames drawn so far (for measuring the frame rate)
+    bool cue = false;           ///< the cue stick was drawn
+    bool aim_guide = false;     ///< the aim guide was drawn
+    bool ball_in_hand = false;  ///< the ball-in-hand marker was drawn
 };
 
-std::string status_json(const Controller& c, const Settings& s, CameraMode view, const FrameFacts& frame);
+std::string status_json(const Controller& c, const Settings& s, CameraMode view,
+                        const FrameFacts& frame);
 
 /// Writes `text` to `path` atomically when it differs from the last text written.
 class StatusFile {

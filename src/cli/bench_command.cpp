@@ -1,4 +1,5 @@
 // `bench`: times the standard scenes (physics/scenes.hpp) and reports median and p95 per scene.
+#include <fmt/format.h>
 #include <sys/utsname.h>
 
 #include <algorithm>
@@ -7,8 +8,6 @@
 #include <string>
 #include <thread>
 #include <vector>
-
-#include <fmt/format.h>
 
 #include "cli/commands.hpp"
 #include "cli/json_in.hpp"

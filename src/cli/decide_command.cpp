@@ -71,8 +71,9 @@ void require_positions(const JsonIn& state, const rules::GameState& s) {
                                              "every ball's position, e.g. \"{}\": [1.9, 0.6]",
                                              id, id));
     if (s.cue_ball == rules::CueBall::on_table && !s.positions.count(0))
-        throw BadInput(path, "the cue ball is on the table (cue_ball \"on_table\"): give its "
-                             "position as \"0\": [x, y]");
+        throw BadInput(path,
+                       "the cue ball is on the table (cue_ball \"on_table\"): give its "
+                       "position as \"0\": [x, y]");
 }
 
 nlohmann::ordered_json call_json(const rules::Call& c) {
@@ -91,8 +92,9 @@ nlohmann::ordered_json decide_command(const nlohmann::json& input) {
     if (auto t = in.find("table")) {
         spec = read_table(*t, params.ball_radius);
         if (!spec.bounded || !spec.pockets)
-            t->fail("the AI plays on a table with cushions and pockets: use \"7ft\", \"8ft\", "
-                    "\"9ft\" or an object with \"pockets\": true");
+            t->fail(
+                "the AI plays on a table with cushions and pockets: use \"7ft\", \"8ft\", "
+                "\"9ft\" or an object with \"pockets\": true");
     }
     rules::Options options;
     if (auto o = in.find("options")) options = read_options(*o);
@@ -122,8 +124,8 @@ nlohmann::ordered_json decide_command(const nlohmann::json& input) {
     out["call"] = d.choice ? nlohmann::ordered_json(nullptr) : call_json(d.call);
     out["cue_pos"] = d.cue_pos ? to_json(*d.cue_pos) : nlohmann::ordered_json(nullptr);
     out["push_out"] = d.push_out;
-    out["choice"] = d.choice ? nlohmann::ordered_json(rules::name(*d.choice))
-                             : nlohmann::ordered_json(nullptr);
+    out["choice"] =
+        d.choice ? nlohmann::ordered_json(rules::name(*d.choice)) : nlohmann::ordered_json(nullptr);
     out["expected_success"] = plan.expected_success;
     out["simulations"] = plan.simulations;
     out["seconds"] = seconds;

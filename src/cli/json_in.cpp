@@ -1,10 +1,10 @@
 #include "cli/json_in.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <set>
 #include <vector>
-
-#include <fmt/format.h>
 
 namespace cli {
 
@@ -145,7 +145,7 @@ namespace {
 /// Tracks where the parser is (a JSON path) so that a field given twice in one object is
 /// reported by its path: nlohmann keeps only the last one, which would silently ignore the first.
 class DuplicateKeyCheck {
-public:
+  public:
     bool operator()(int /*depth*/, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
         using E = nlohmann::json::parse_event_t;
         switch (event) {
@@ -173,7 +173,7 @@ public:
         return true;
     }
 
-private:
+  private:
     // An object or array being read; its current key or index names the child being read.
     struct Frame {
         bool object;

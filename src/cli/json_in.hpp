@@ -4,30 +4,29 @@
 
 #include <cstdint>
 #include <initializer_list>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 
-#include <nlohmann/json.hpp>
-
 namespace cli {
 
 /// Bad input: printed as "error: <path>: <message>", exit status 2.
 class BadInput : public std::runtime_error {
-public:
+  public:
     BadInput(std::string path, const std::string& message);
     const std::string& path() const { return path_; }
     const std::string& detail() const { return detail_; }
 
-private:
+  private:
     std::string path_;
     std::string detail_;
 };
 
 /// A JSON value and its path (e.g. "balls[3].pos").
 class JsonIn {
-public:
+  public:
     JsonIn(const nlohmann::json& value, std::string path)
         : value_(&value), path_(std::move(path)) {}
 
@@ -62,7 +61,7 @@ public:
     /// A string that must be one of `choices`.
     std::string one_of(std::initializer_list<std::string_view> choices) const;
 
-private:
+  private:
     std::string child_path(std::string_view key) const;
 
     const nlohmann::json* value_;

@@ -1,8 +1,8 @@
 #include "cli/json_out.hpp"
 
-#include <cmath>
-
 #include <fmt/format.h>
+
+#include <cmath>
 
 namespace cli {
 

@@ -2,10 +2,9 @@
 // the same double, -0 written as 0, and never a NaN or an infinity (an engine bug, exit 1).
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
-
-#include <nlohmann/json.hpp>
 
 #include "physics/vec.hpp"
 
@@ -13,7 +12,7 @@ namespace cli {
 
 /// An output document whose number was not finite: an internal error, not bad input.
 class InternalError : public std::logic_error {
-public:
+  public:
     using std::logic_error::logic_error;
 };
 

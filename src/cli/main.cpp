@@ -7,6 +7,9 @@
 //                       [--noise X] [--duplicate] [--pretty]
 // Exit status: 0 success; 2 bad input (one line on stderr: "error: <json path>: <message>",
 // nothing on stdout); 1 internal error.
+#include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -15,9 +18,6 @@
 #include <new>
 #include <sstream>
 #include <string>
-
-#include <fmt/format.h>
-#include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
 #include "cli/json_in.hpp"
@@ -87,8 +87,7 @@ int main(int argc, char** argv) {
     CLI::App* simulate =
         app.add_subcommand("simulate", "Simulate one shot: balls, a strike → events");
     CLI::App* judge = app.add_subcommand("judge", "Apply the rules of a game to one shot's events");
-    CLI::App* decide =
-        app.add_subcommand("decide", "The computer player's decision in a position");
+    CLI::App* decide = app.add_subcommand("decide", "The computer player's decision in a position");
     CLI::App* bench = app.add_subcommand("bench", "Time the standard scenes");
     cli::MatchOptions match_options;
     CLI::App* match = app.add_subcommand("match", "Play whole games between two players");
@@ -127,12 +126,10 @@ int main(int argc, char** argv) {
                 cli::simulate_command(cli::parse_document(read_input(file)));
             text = cli::write_document(out, pretty);
         } else if (judge->parsed()) {
-            nlohmann::ordered_json out =
-                cli::judge_command(cli::parse_document(read_input(file)));
+            nlohmann::ordered_json out = cli::judge_command(cli::parse_document(read_input(file)));
             text = cli::write_document(out, pretty);
         } else if (decide->parsed()) {
-            nlohmann::ordered_json out =
-                cli::decide_command(cli::parse_document(read_input(file)));
+            nlohmann::ordered_json out = cli::decide_command(cli::parse_document(read_input(file)));
             text = cli::write_document(out, pretty);
         } else if (bench->parsed()) {
             nlohmann::ordered_json out = cli::bench_command(runs);

@@ -90,7 +90,8 @@ std::uint64_t read_seed(const std::string& text) {
 // multiplier (game::Player::execution_noise).
 std::unique_ptr<game::Player> make_player(const std::string& kind, std::uint64_t seed,
                                           double noise) {
-    if (kind.rfind("ai:", 0) == 0) return std::make_unique<ai::AiPlayer>(kind[3] - '0', seed, noise);
+    if (kind.rfind("ai:", 0) == 0)
+        return std::make_unique<ai::AiPlayer>(kind[3] - '0', seed, noise);
     return std::make_unique<game::RandomPlayer>(seed);
 }
 

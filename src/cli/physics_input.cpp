@@ -1,13 +1,13 @@
 #include "cli/physics_input.hpp"
 
+#include <fmt/format.h>
+
 #include <array>
 #include <climits>
 #include <cmath>
 #include <optional>
 #include <string>
 #include <string_view>
-
-#include <fmt/format.h>
 
 #include "physics/layout.hpp"
 #include "physics/rack.hpp"

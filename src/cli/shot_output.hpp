@@ -1,9 +1,8 @@
 // Writing a simulated shot as the `simulate` output document (cli-contract.md).
 #pragma once
 
-#include <span>
-
 #include <nlohmann/json.hpp>
+#include <span>
 
 #include "physics/event.hpp"
 #include "physics/shot.hpp"

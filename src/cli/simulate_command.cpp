@@ -1,9 +1,9 @@
 // `simulate`: reads a table, parameters, balls and an optional stroke, simulates the shot and
 // writes its events, final state and samples (cli-contract.md).
+#include <fmt/format.h>
+
 #include <optional>
 #include <vector>
-
-#include <fmt/format.h>
 
 #include "cli/commands.hpp"
 #include "cli/json_in.hpp"

@@ -39,8 +39,8 @@ double ball_ball(const Params& p, BallBallModel model, BallState& a, BallState& 
 /// to the cushion (for a straight face, minus its normal; for a jaw nose, toward its axis);
 /// `nose_height` the height of the contact above the cloth (unit: m). Returns the normal
 /// approach speed.
-double cushion(const Params& p, CushionModel model, double nose_height, Vec2 toward,
-               BallState& b, bool pushing);
+double cushion(const Params& p, CushionModel model, double nose_height, Vec2 toward, BallState& b,
+               bool pushing);
 
 /// Ball–ball friction coefficient for a contact slip speed (unit: m/s).
 double ball_ball_friction(const Params& p, double slip_speed);

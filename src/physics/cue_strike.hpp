@@ -8,9 +8,9 @@
 namespace physics {
 
 struct StrikeResult {
-    Vec2 vel;             ///< cue ball velocity just after the strike (unit: m/s)
-    Vec3 spin;            ///< cue ball angular velocity (unit: rad/s)
-    bool miscue = false;  ///< the tip offset exceeded miscue_limit
+    Vec2 vel;                 ///< cue ball velocity just after the strike (unit: m/s)
+    Vec3 spin;                ///< cue ball angular velocity (unit: rad/s)
+    bool miscue = false;      ///< the tip offset exceeded miscue_limit
     double squirt_deg = 0.0;  ///< deflection of the cue ball from the stroke line (unit: deg)
 };
 

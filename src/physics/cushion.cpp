@@ -59,8 +59,8 @@ double simple(const Params& p, Vec2 n, BallState& b, bool pushing) {
 
 }  // namespace
 
-double cushion(const Params& p, CushionModel model, double nose_height, Vec2 toward,
-               BallState& b, bool pushing) {
+double cushion(const Params& p, CushionModel model, double nose_height, Vec2 toward, BallState& b,
+               bool pushing) {
     const double budget = kinetic_energy(p, b);
     const double vn = model == CushionModel::han2005 ? han2005(p, nose_height, toward, b, pushing)
                                                      : simple(p, toward, b, pushing);

@@ -140,8 +140,8 @@ inline bool surely_apart(Vec2 dp, Vec2 dv, Vec2 da, double dist, double D, doubl
 /// Contact of a moving point with a fixed or moving circle of radius D about another point:
 /// f(τ) = |Δp + Δv·τ + ½Δa·τ²|² − D², a quartic. `screened`: the caller has already found
 /// |Δp|² ≤ (D + reach)² (up to rounding), so the first test below could not reject.
-inline Prediction circle_contact(Vec2 dp, Vec2 dv, Vec2 da, double D, double reach,
-                                 double horizon, bool screened = false) {
+inline Prediction circle_contact(Vec2 dp, Vec2 dv, Vec2 da, double D, double reach, double horizon,
+                                 bool screened = false) {
     // Out of reach, decided without a square root where the margin is clear: |Δp|² above
     // (D + reach)²·(1 + 1e-9) means |Δp| − D > reach by ~5e-10·(D + reach), far above the
     // rounding of either test, so the test below would return the same none.

@@ -34,7 +34,7 @@ struct Event {
     EventType type = EventType::transition;
     std::uint8_t ball_count = 1;
     std::array<EventBall, 2> balls{};
-    double speed = 0.0;          ///< normal approach speed of a collision (unit: m/s)
+    double speed = 0.0;  ///< normal approach speed of a collision (unit: m/s)
     Motion from = Motion::stationary, to = Motion::stationary;  ///< for transitions
     int rail = -1;    ///< cushion events on a rail: the rail index
     int pocket = -1;  ///< pocket events: the pocket; cushion events on a jaw: its pocket

@@ -19,8 +19,7 @@ std::optional<LayoutError> validate_layout(const Table& table, const Params& par
     auto finite = [](double v) { return std::isfinite(v); };
     for (std::size_t i = 0; i < balls.size(); ++i) {
         const BallState& b = balls[i];
-        if (b.id < 0 || b.id > 15)
-            return LayoutError{i, "id", "ball ids are 0 (cue ball) to 15"};
+        if (b.id < 0 || b.id > 15) return LayoutError{i, "id", "ball ids are 0 (cue ball) to 15"};
         for (std::size_t j = 0; j < i; ++j)
             if (balls[j].id == b.id)
                 return LayoutError{i, "id", "ball " + std::to_string(b.id) + " is given twice"};
@@ -30,8 +29,9 @@ std::optional<LayoutError> validate_layout(const Table& table, const Params& par
             return LayoutError{i, "spin", "spin must be finite"};
         if (b.motion == Motion::pocketed) continue;
         if (!table.on_surface(b.pos, R))
-            return LayoutError{i, "pos", "ball is off the table (its centre must lie at least R = " +
-                                             std::to_string(R) + " m inside the cushions)"};
+            return LayoutError{i, "pos",
+                               "ball is off the table (its centre must lie at least R = " +
+                                   std::to_string(R) + " m inside the cushions)"};
     }
     for (std::size_t i = 0; i < balls.size(); ++i) {
         if (balls[i].motion == Motion::pocketed) continue;
@@ -39,8 +39,9 @@ std::optional<LayoutError> validate_layout(const Table& table, const Params& par
             if (balls[j].motion == Motion::pocketed) continue;
             double d = norm(balls[i].pos - balls[j].pos);
             if (d < 2 * R - overlap_tolerance)
-                return LayoutError{i, "pos", "ball overlaps ball " + std::to_string(balls[j].id) +
-                                                 " (centres must be at least 2R apart)"};
+                return LayoutError{i, "pos",
+                                   "ball overlaps ball " + std::to_string(balls[j].id) +
+                                       " (centres must be at least 2R apart)"};
         }
     }
     return std::nullopt;

@@ -15,8 +15,8 @@ namespace physics {
 inline constexpr double overlap_tolerance = 1e-9;  // (unit: m)
 
 struct LayoutError {
-    std::size_t index;  ///< index of the offending ball in the given span
-    std::string field;  ///< "id", "pos", "vel" or "spin"
+    std::size_t index;    ///< index of the offending ball in the given span
+    std::string field;    ///< "id", "pos", "vel" or "spin"
     std::string message;  ///< e.g. "ball overlaps ball 5"
 };
 

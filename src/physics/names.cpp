@@ -13,7 +13,9 @@ constexpr std::array<std::string_view, 7> kEventNames = {
     "strike", "miscue", "transition", "ball_ball", "cushion", "pocket", "off_table"};
 }  // namespace
 
-std::string_view to_string(Motion m) { return kMotionNames[static_cast<std::size_t>(m)]; }
+std::string_view to_string(Motion m) {
+    return kMotionNames[static_cast<std::size_t>(m)];
+}
 
 std::optional<Motion> motion_from_string(std::string_view s) {
     for (std::size_t i = 0; i < kMotionNames.size(); ++i)
@@ -21,6 +23,8 @@ std::optional<Motion> motion_from_string(std::string_view s) {
     return std::nullopt;
 }
 
-std::string_view to_string(EventType t) { return kEventNames[static_cast<std::size_t>(t)]; }
+std::string_view to_string(EventType t) {
+    return kEventNames[static_cast<std::size_t>(t)];
+}
 
 }  // namespace physics

@@ -15,9 +15,13 @@ std::uint64_t SplitMix64::next() {
     return z ^ (z >> 31);
 }
 
-double SplitMix64::uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
+double SplitMix64::uniform() {
+    return static_cast<double>(next() >> 11) * 0x1.0p-53;
+}
 
-std::uint64_t SplitMix64::below(std::uint64_t n) { return n == 0 ? 0 : next() % n; }
+std::uint64_t SplitMix64::below(std::uint64_t n) {
+    return n == 0 ? 0 : next() % n;
+}
 
 namespace {
 
@@ -71,10 +75,14 @@ std::vector<BallState> rack(RackType type, const Table& table, const Params& par
         shuffle(rest, rng);
         k = 0;
         for (std::size_t s = 0; s < 15; ++s) {
-            if (s == 4) slot_ball[s] = 8;
-            else if (s == 10) slot_ball[s] = solid;
-            else if (s == 14) slot_ball[s] = stripe;
-            else slot_ball[s] = rest[k++];
+            if (s == 4)
+                slot_ball[s] = 8;
+            else if (s == 10)
+                slot_ball[s] = solid;
+            else if (s == 14)
+                slot_ball[s] = stripe;
+            else
+                slot_ball[s] = rest[k++];
         }
     } else {
         slots = rack_slots(table, R, {1, 2, 3, 2, 1});
@@ -82,11 +90,11 @@ std::vector<BallState> rack(RackType type, const Table& table, const Params& par
         std::array<int, 7> rest{2, 3, 4, 5, 6, 7, 8};
         shuffle(rest, rng);
         std::size_t k = 0;
-        for (std::size_t s = 0; s < 9; ++s)
-            slot_ball[s] = s == 0 ? 1 : s == 4 ? 9 : rest[k++];
+        for (std::size_t s = 0; s < 9; ++s) slot_ball[s] = s == 0 ? 1 : s == 4 ? 9 : rest[k++];
     }
     std::vector<BallState> objects;
-    for (std::size_t s = 0; s < slots.size(); ++s) objects.push_back(ball_at(slot_ball[s], slots[s]));
+    for (std::size_t s = 0; s < slots.size(); ++s)
+        objects.push_back(ball_at(slot_ball[s], slots[s]));
     std::sort(objects.begin(), objects.end(),
               [](const BallState& a, const BallState& b) { return a.id < b.id; });
     balls.insert(balls.end(), objects.begin(), objects.end());

@@ -20,7 +20,7 @@ std::vector<BallState> rack(RackType type, const Table& table, const Params& par
 
 /// A small deterministic random generator (SplitMix64), identical on every platform.
 class SplitMix64 {
-public:
+  public:
     explicit SplitMix64(std::uint64_t seed) : state_(seed) {}
     std::uint64_t next();
     /// Uniform in [0, 1).
@@ -28,7 +28,7 @@ public:
     /// Uniform integer in [0, n).
     std::uint64_t below(std::uint64_t n);
 
-private:
+  private:
     std::uint64_t state_;
 };
 

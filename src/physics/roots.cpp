@@ -512,12 +512,14 @@ inline bool rises_throughout(const Poly4& c, double lo, double hi) {
 /// returns the same without the walk (a touching pair separating, overlapping by rounding).
 inline bool slope_stays_positive(const Poly4& c, double hi) {
     if (!(c[1] >= 1e-290 && hi < kInf)) return false;  // (first: an approaching pair fails here)
-    double take = 0.0, give = c[1], power = hi;     // hi^i
+    double take = 0.0, give = c[1], power = hi;        // hi^i
     for (int i = 1; i <= 3; ++i) {
         const double d = static_cast<double>(i + 1) * c[i + 1];
         if (!(std::fabs(d) < kInf)) return false;
-        if (d < 0.0) take += -d * power;
-        else give += d * power;
+        if (d < 0.0)
+            take += -d * power;
+        else
+            give += d * power;
         power *= hi;
     }
     return c[1] < kInf && give < 1e300 && take <= 0.75 * c[1];

@@ -24,7 +24,9 @@ double heading_deg(Vec2 from, Vec2 to) {
 
 }  // namespace
 
-std::vector<std::string> standard_scene_names() { return {"break", "cut", "long_roll", "bank"}; }
+std::vector<std::string> standard_scene_names() {
+    return {"break", "cut", "long_roll", "bank"};
+}
 
 Scene standard_scene(std::string_view name, const Params& params) {
     Scene s;

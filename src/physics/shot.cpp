@@ -8,7 +8,9 @@ namespace physics {
 
 Shot::Shot(Params params, std::vector<Event> events, std::vector<std::vector<Segment>> segments,
            bool truncated)
-    : params_(params), events_(std::move(events)), segments_(std::move(segments)),
+    : params_(params),
+      events_(std::move(events)),
+      segments_(std::move(segments)),
       truncated_(truncated) {}
 
 std::optional<std::size_t> Shot::index_of(int id) const {

@@ -19,7 +19,7 @@ struct Segment {
 };
 
 class Shot {
-public:
+  public:
     Shot() = default;
     Shot(Params params, std::vector<Event> events, std::vector<std::vector<Segment>> segments,
          bool truncated);
@@ -45,7 +45,7 @@ public:
     bool truncated() const { return truncated_; }
     const Params& params() const { return params_; }
 
-private:
+  private:
     Params params_;
     std::vector<Event> events_;
     std::vector<std::vector<Segment>> segments_;

@@ -37,8 +37,8 @@ enum class Kind : int { ball_ball = 0, line = 1, nose = 2, drop = 3, transition 
 struct Candidate {
     double time = kInf;
     Kind kind = Kind::transition;
-    int a = -1;       ///< ball index
-    int b = -1;       ///< second ball index, or geometry index
+    int a = -1;  ///< ball index
+    int b = -1;  ///< second ball index, or geometry index
     bool pushing = false;
 
     /// Total order: time, then kind, then ball and geometry indices (determinism).
@@ -73,7 +73,7 @@ class Simulation {
         double reach = 0.0;
     };
 
-public:
+  public:
     Simulation(const Table& table, const Params& params, std::span<const BallState> balls,
                const SimOptions& options)
         : table_(table), params_(params), options_(options), n_(balls.size()) {
@@ -134,11 +134,9 @@ public:
         return true;
     }
 
-    Shot finish() && {
-        return Shot(params_, std::move(events_), std::move(segments_), truncated_);
-    }
+    Shot finish() && { return Shot(params_, std::move(events_), std::move(segments_), truncated_); }
 
-private:
+  private:
     std::size_t index_of(int id) const {
         for (std::size_t i = 0; i < n_; ++i)
             if (segments_[i].front().start.id == id) return i;
@@ -175,14 +173,14 @@ private:
         const Live& l = live_[i] = make_live(s, t0);
         const std::uint32_t bit = 1u << i;
         active_ = s.motion == Motion::pocketed ? active_ & ~bit : active_ | bit;
-        const bool still = l.vel.x == 0.0 && l.vel.y == 0.0 && l.acc.x == 0.0 &&
-                           l.acc.y == 0.0 && std::isfinite(l.pos.x) && std::isfinite(l.pos.y);
+        const bool still = l.vel.x == 0.0 && l.vel.y == 0.0 && l.acc.x == 0.0 && l.acc.y == 0.0 &&
+                           std::isfinite(l.pos.x) && std::isfinite(l.pos.y);
         still_ = still ? still_ | bit : still_ & ~bit;
     }
     Live make_live(const BallState& s, double t0) const {
         const Vec2 a = motion::acceleration(params_, s);
-        return {s.pos, s.vel, a, t0, t0 + motion::duration(params_, s), norm(s.vel), norm(a),
-                s.motion};
+        return {s.pos,       s.vel,   a,       t0, t0 + motion::duration(params_, s),
+                norm(s.vel), norm(a), s.motion};
     }
 
     Event make_event(EventType type, std::initializer_list<std::size_t> balls) const {
@@ -326,8 +324,8 @@ private:
         for (; noses != 0; noses &= noses - 1)
             try_nose(static_cast<std::size_t>(std::countr_zero(noses)));
         for (std::size_t g = 0; g < pockets.size(); ++g) {
-            consider(detect::drop(m, pockets[g], drop_lateral[g]), Kind::drop,
-                     static_cast<int>(g), false);
+            consider(detect::drop(m, pockets[g], drop_lateral[g]), Kind::drop, static_cast<int>(g),
+                     false);
         }
         own_[i] = own;
         // Pairs: a contact after either ball's own next event need not be searched, since that
@@ -366,9 +364,8 @@ private:
             const bool rolling_j = rolling(j);
             // |v_j(now)| ≤ |v_j(t0)| + |a_j|·(now − t0): no square root per pair.
             const double speed_j = live_[j].speed + live_[j].accel * (now - live_[j].t0);
-            const double reach_i = until == own_i
-                                       ? reach_i_own
-                                       : detect::reach_bound(speed_i, accel_i, h, rolling_i);
+            const double reach_i =
+                until == own_i ? reach_i_own : detect::reach_bound(speed_i, accel_i, h, rolling_i);
             // (reach_bound is at least 1e-12, never 0: no test for two balls that cannot move)
             const double reach_j = detect::reach_bound(speed_j, live_[j].accel, h, rolling_j);
             const motion::Kinematics kj = kinematics(j);
@@ -399,7 +396,8 @@ private:
         if (nl > 64 || nn > 64) return;  // not grouped: every face and nose is tried
         grouped_ = true;
         groups_.assign(table_.pockets.size(), FaceGroup{});
-        for (std::size_t k = 0; k < groups_.size(); ++k) groups_[k].centre = table_.pockets[k].centre;
+        for (std::size_t k = 0; k < groups_.size(); ++k)
+            groups_[k].centre = table_.pockets[k].centre;
         auto grow = [](FaceGroup& fg, Vec2 at, double extent) {
             const double r = (norm(at - fg.centre) + extent) * (1.0 + 1e-9) + 1e-9;
             if (r > fg.radius) fg.radius = r;
@@ -453,8 +451,8 @@ private:
             case Kind::ball_ball: {
                 const std::size_t b = static_cast<std::size_t>(c.b);
                 BallState sa = state_now(a), sb = state_now(b);
-                const double speed = collide::ball_ball(params_, options_.models.ball_ball, sa, sb,
-                                                        c.pushing);
+                const double speed =
+                    collide::ball_ball(params_, options_.models.ball_ball, sa, sb, c.pushing);
                 if (speed < collide::kInelasticSpeed && jammed(a, b)) {
                     // Resolving a slow ball wedged between others one contact at a time
                     // converges too slowly (nearly opposite contacts); a jammed ball stops.
@@ -486,9 +484,9 @@ private:
                     toward = (1.0 / norm(n.centre - s.pos)) * (n.centre - s.pos);
                     proto.pocket = n.pocket;
                 }
-                const double speed = collide::cushion(params_, options_.models.cushion,
-                                                      table_.spec.cushion_height, toward, s,
-                                                      c.pushing);
+                const double speed =
+                    collide::cushion(params_, options_.models.cushion, table_.spec.cushion_height,
+                                     toward, s, c.pushing);
                 start_segment(a, s);
                 Event e = make_event(EventType::cushion, {a});
                 e.speed = speed;

@@ -11,7 +11,9 @@ namespace {
 constexpr std::array<std::string_view, 6> kPocketNames = {"SW", "S", "SE", "NW", "N", "NE"};
 constexpr std::array<std::string_view, 6> kRailNames = {"W", "E", "SW-S", "S-SE", "NW-N", "N-NE"};
 
-Vec2 unit(Vec2 v) { return (1.0 / norm(v)) * v; }
+Vec2 unit(Vec2 v) {
+    return (1.0 / norm(v)) * v;
+}
 
 CushionLine make_line(Vec2 a, Vec2 b, Vec2 normal, int rail, int pocket) {
     Vec2 d = b - a;
@@ -21,9 +23,9 @@ CushionLine make_line(Vec2 a, Vec2 b, Vec2 normal, int rail, int pocket) {
 
 /// One nose tip of a pocket: where a rail face meets a jaw facing.
 struct NoseTip {
-    Vec2 tip;        ///< the sharp corner, from which the mouth is measured
-    Vec2 along_rail; ///< unit direction along the rail face, away from the pocket
-    Vec2 normal;     ///< the rail face's normal, into the table
+    Vec2 tip;         ///< the sharp corner, from which the mouth is measured
+    Vec2 along_rail;  ///< unit direction along the rail face, away from the pocket
+    Vec2 normal;      ///< the rail face's normal, into the table
 };
 
 /// Rounds the corner at a nose tip and adds the jaw facing and the nose. Returns the point
@@ -41,7 +43,8 @@ Vec2 add_jaw(Table& t, const NoseTip& n, double facing_deg, int pocket) {
     // The facing's normal points away from the cushion material (which lies toward the rail).
     Vec2 m = perp(f);
     if (dot(m, n.along_rail) > 0) m = -m;
-    if (t.spec.jaw_depth > tangent) t.lines.push_back(make_line(facing_start, facing_end, m, -1, pocket));
+    if (t.spec.jaw_depth > tangent)
+        t.lines.push_back(make_line(facing_start, facing_end, m, -1, pocket));
     if (r > 0) {
         Vec2 bisector = unit(n.along_rail + f);
         t.noses.push_back({n.tip + (r / std::sin(half)) * bisector, r, pocket});
@@ -99,8 +102,10 @@ std::optional<std::string> validate_table_spec(const TableSpec& s, double ball_r
     auto finite_positive = [](double v) { return std::isfinite(v) && v > 0; };
     if (!s.bounded) return std::nullopt;
     const double d = 2.0 * ball_radius;
-    if (!finite_positive(s.length) || s.length < 4 * d) return "length: must be at least 4 ball diameters";
-    if (!finite_positive(s.width) || s.width < 4 * d) return "width: must be at least 4 ball diameters";
+    if (!finite_positive(s.length) || s.length < 4 * d)
+        return "length: must be at least 4 ball diameters";
+    if (!finite_positive(s.width) || s.width < 4 * d)
+        return "width: must be at least 4 ball diameters";
     if (s.width > s.length) return "width: must not exceed length";
     if (!s.pockets) return std::nullopt;
     if (!finite_positive(s.corner_mouth) || s.corner_mouth <= d || s.corner_mouth > s.width / 4)

@@ -14,19 +14,22 @@ namespace physics {
 
 /// The user-facing dimensions of a table (all lengths in m, angles in degrees).
 struct TableSpec {
-    double length = 2.540;            ///< L, cushion nose to cushion nose along x (unit: m)
-    double width = 1.270;             ///< W, along y (unit: m)
-    double corner_mouth = 0.116;      ///< corner pocket mouth, nose tip to nose tip (unit: m)
-    double side_mouth = 0.1285;       ///< side pocket mouth (unit: m)
-    double corner_facing_deg = 142.0; ///< angle of a corner jaw facing to its cushion line (unit: deg)
-    double side_facing_deg = 104.0;   ///< angle of a side jaw facing to its cushion line (unit: deg)
-    double jaw_nose_radius = 0.005;   ///< radius of the rounded jaw noses (unit: m)
-    double cushion_height = 0.036290; ///< cushion nose height above the cloth (unit: m); 63.5 % of 2R
-    double corner_shelf = 0.0286;     ///< depth of the slate's pocket edge behind a corner mouth (unit: m)
-    double side_shelf = 0.0048;       ///< depth of the slate's pocket edge behind a side mouth (unit: m)
-    double jaw_depth = 0.0635;        ///< length of a jaw facing into the cushion (unit: m)
-    bool pockets = true;              ///< false: closed rails, no pockets
-    bool bounded = true;              ///< false: "unbounded", no cushions and no pockets
+    double length = 2.540;        ///< L, cushion nose to cushion nose along x (unit: m)
+    double width = 1.270;         ///< W, along y (unit: m)
+    double corner_mouth = 0.116;  ///< corner pocket mouth, nose tip to nose tip (unit: m)
+    double side_mouth = 0.1285;   ///< side pocket mouth (unit: m)
+    double corner_facing_deg =
+        142.0;  ///< angle of a corner jaw facing to its cushion line (unit: deg)
+    double side_facing_deg = 104.0;  ///< angle of a side jaw facing to its cushion line (unit: deg)
+    double jaw_nose_radius = 0.005;  ///< radius of the rounded jaw noses (unit: m)
+    double cushion_height =
+        0.036290;  ///< cushion nose height above the cloth (unit: m); 63.5 % of 2R
+    double corner_shelf =
+        0.0286;  ///< depth of the slate's pocket edge behind a corner mouth (unit: m)
+    double side_shelf = 0.0048;  ///< depth of the slate's pocket edge behind a side mouth (unit: m)
+    double jaw_depth = 0.0635;   ///< length of a jaw facing into the cushion (unit: m)
+    bool pockets = true;         ///< false: closed rails, no pockets
+    bool bounded = true;         ///< false: "unbounded", no cushions and no pockets
 };
 
 /// The named presets: "7ft", "8ft", "9ft", "unbounded". Empty for an unknown name.
@@ -43,12 +46,12 @@ std::optional<int> pocket_from_name(std::string_view name);
 
 /// A straight cushion face: a ball's centre touches it at distance R on the `normal` side.
 struct CushionLine {
-    Vec2 a, b;       ///< end points of the face (unit: m)
-    Vec2 dir;        ///< unit vector from a to b
-    Vec2 normal;     ///< unit normal pointing to where the balls are
-    double length;   ///< |b − a| (unit: m)
-    int rail = -1;   ///< rail index for a rail face, else −1
-    int pocket = -1; ///< pocket index for a jaw facing, else −1
+    Vec2 a, b;        ///< end points of the face (unit: m)
+    Vec2 dir;         ///< unit vector from a to b
+    Vec2 normal;      ///< unit normal pointing to where the balls are
+    double length;    ///< |b − a| (unit: m)
+    int rail = -1;    ///< rail index for a rail face, else −1
+    int pocket = -1;  ///< pocket index for a jaw facing, else −1
 };
 
 /// A rounded jaw nose: a cylinder of radius `radius` about `centre`.
@@ -85,7 +88,8 @@ struct Table {
 /// Builds the geometry from a specification. The spec must be valid (see validate_table_spec).
 Table build_table(const TableSpec& spec);
 
-/// Empty if valid, else a message naming the field (e.g. "corner_mouth: must be larger than a ball").
+/// Empty if valid, else a message naming the field (e.g. "corner_mouth: must be larger than a
+/// ball").
 std::optional<std::string> validate_table_spec(const TableSpec& spec, double ball_radius);
 
 }  // namespace physics

@@ -2,14 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "render/table_mesh.hpp"
 
 namespace render {
 
-glm::mat4 Camera::view() const { return glm::lookAt(eye, target, up); }
+glm::mat4 Camera::view() const {
+    return glm::lookAt(eye, target, up);
+}
 
 glm::mat4 Camera::projection(float aspect) const {
     return glm::perspective(glm::radians(fovy_deg), aspect, near_m, far_m);
@@ -79,7 +80,8 @@ Camera lerp(const Camera& a, const Camera& b, float t) {
             u = glm::normalize(glm::mix(ua, ub, t));
         } else if (w > 3.1415f) {
             // Opposite directions: swing over the top.
-            const glm::vec3 side = glm::normalize(glm::cross(ua, std::abs(ua.z) < 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0)));
+            const glm::vec3 side = glm::normalize(
+                glm::cross(ua, std::abs(ua.z) < 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0)));
             const glm::vec3 over = glm::cross(side, ua);
             u = std::cos(w * t) * ua + std::sin(w * t) * over;
         } else {

@@ -9,7 +9,7 @@
 namespace render {
 
 struct Camera {
-    glm::vec3 eye{1.27f, 0.635f, 3.0f};  ///< (unit: m)
+    glm::vec3 eye{1.27f, 0.635f, 3.0f};     ///< (unit: m)
     glm::vec3 target{1.27f, 0.635f, 0.0f};  ///< (unit: m)
     glm::vec3 up{0.0f, 1.0f, 0.0f};
     float fovy_deg = 40.0f;  ///< vertical field of view (unit: deg)
@@ -27,7 +27,8 @@ Camera overhead_camera(const physics::Table& table, float aspect);
 
 /// Behind the cue ball, looking along `heading` (unit: rad, from +x counter-clockwise),
 /// `distance` back and `height` above the cloth (unit: m).
-Camera cue_ball_camera(glm::vec2 cue_ball, float heading, float distance = 0.7f, float height = 0.28f);
+Camera cue_ball_camera(glm::vec2 cue_ball, float heading, float distance = 0.7f,
+                       float height = 0.28f);
 
 /// A free orbit camera looking at `target` along the heading `yaw_rad` (from +x counter-
 /// clockwise, as cue_ball_camera's heading), down by `pitch_rad` (0 level, π/2 straight

@@ -1,5 +1,6 @@
-// An OpenGL 3.3 core (or OpenGL ES 3.0) context with no display and no window (EGL on Mesa: the surfaceless
-// platform, else a pbuffer on the default display), for tests, goldens and the benchmark.
+// An OpenGL 3.3 core (or OpenGL ES 3.0) context with no display and no window (EGL on Mesa: the
+// surfaceless platform, else a pbuffer on the default display), for tests, goldens and the
+// benchmark.
 #pragma once
 
 #include <memory>
@@ -12,7 +13,7 @@ namespace render {
 enum class HeadlessApi { gl33_core, gles30 };
 
 class HeadlessContext {
-public:
+  public:
     /// Creates the context and makes it current. Throws std::runtime_error naming the EGL step
     /// that failed (e.g. "eglInitialize failed: install libegl-mesa0 and libgl1-mesa-dri").
     explicit HeadlessContext(HeadlessApi api = HeadlessApi::gl33_core);
@@ -23,7 +24,7 @@ public:
     /// GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
     std::string renderer_name() const;
 
-private:
+  private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

@@ -11,7 +11,8 @@
 namespace render {
 
 Image read_pixels(int width, int height) {
-    Image img{width, height, std::vector<std::uint8_t>(static_cast<std::size_t>(width) * height * 4)};
+    Image img{width, height,
+              std::vector<std::uint8_t>(static_cast<std::size_t>(width) * height * 4)};
     std::vector<std::uint8_t> raw(img.rgba.size());
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, raw.data());
@@ -43,7 +44,8 @@ ImageDiff compare(const Image& a, const Image& b, int tolerance) {
     std::size_t over = 0;
     for (std::size_t p = 0; p < a.rgba.size(); p += 4) {
         int worst = 0;
-        for (std::size_t c = 0; c < 4; ++c) worst = std::max(worst, std::abs(int(a.rgba[p + c]) - int(b.rgba[p + c])));
+        for (std::size_t c = 0; c < 4; ++c)
+            worst = std::max(worst, std::abs(int(a.rgba[p + c]) - int(b.rgba[p + c])));
         d.max_channel_diff = std::max(d.max_channel_diff, worst);
         if (worst > tolerance) ++over;
     }

@@ -21,8 +21,9 @@ bool write_png(const std::string& path, const Image& image);
 Image load_png(const std::string& path);
 
 struct ImageDiff {
-    int max_channel_diff = 0;       ///< largest |a − b| over all channels (unit: 1/255)
-    double fraction_over = 0.0;     ///< fraction of pixels with a channel differing by more than the tolerance
+    int max_channel_diff = 0;  ///< largest |a − b| over all channels (unit: 1/255)
+    double fraction_over =
+        0.0;  ///< fraction of pixels with a channel differing by more than the tolerance
     bool same_size = false;
 };
 ImageDiff compare(const Image& a, const Image& b, int tolerance);

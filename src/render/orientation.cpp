@@ -35,7 +35,8 @@ glm::dquat initial_orientation(int id) {
     const double azimuth = golden * (id + 1);
     const double elevation = 0.61 + 0.70 * (0.5 + 0.5 * std::sin(1.7 * id + 0.3));
     const double roll = 0.6 + 0.9 * id;
-    return glm::angleAxis(azimuth, glm::dvec3(0, 0, 1)) * glm::angleAxis(-elevation, glm::dvec3(0, 1, 0)) *
+    return glm::angleAxis(azimuth, glm::dvec3(0, 0, 1)) *
+           glm::angleAxis(-elevation, glm::dvec3(0, 1, 0)) *
            glm::angleAxis(roll, glm::dvec3(1, 0, 0));
 }
 

@@ -41,7 +41,9 @@ int main(int argc, char** argv) {
         } else if (a == "--png" && more) {
             png = argv[++i];
         } else {
-            std::fprintf(stderr, "usage: coolaaber-render-bench [--size WxH] [--frames N] [--samples N] [--scene NAME] [--no-table-cache] [--png FILE]\n");
+            std::fprintf(stderr,
+                         "usage: coolaaber-render-bench [--size WxH] [--frames N] [--samples N] "
+                         "[--scene NAME] [--no-table-cache] [--png FILE]\n");
             return 2;
         }
     }
@@ -52,15 +54,24 @@ int main(int argc, char** argv) {
         std::vector<render::DemoScene> scenes;
         const int distinct = 30;
         for (int k = 0; k < distinct; ++k) {
-            if (scene_name == "mid_game") scenes.push_back(render::mid_game_scene(aspect, 0.05 + 2.0 * k / distinct));
-            else if (scene_name == "racked") scenes.push_back(render::racked_scene(aspect));
-            else if (scene_name == "mid_roll") scenes.push_back(render::mid_roll_scene(aspect));
-            else if (scene_name == "cue_view") scenes.push_back(render::cue_view_scene(aspect));
-            else if (scene_name == "ball_in_hand") scenes.push_back(render::ball_in_hand_scene(aspect));
-            else if (scene_name == "aim_overhead") scenes.push_back(render::aim_overhead_scene(aspect));
-            else if (scene_name == "cushion") scenes.push_back(render::cushion_scene(aspect));
+            if (scene_name == "mid_game")
+                scenes.push_back(render::mid_game_scene(aspect, 0.05 + 2.0 * k / distinct));
+            else if (scene_name == "racked")
+                scenes.push_back(render::racked_scene(aspect));
+            else if (scene_name == "mid_roll")
+                scenes.push_back(render::mid_roll_scene(aspect));
+            else if (scene_name == "cue_view")
+                scenes.push_back(render::cue_view_scene(aspect));
+            else if (scene_name == "ball_in_hand")
+                scenes.push_back(render::ball_in_hand_scene(aspect));
+            else if (scene_name == "aim_overhead")
+                scenes.push_back(render::aim_overhead_scene(aspect));
+            else if (scene_name == "cushion")
+                scenes.push_back(render::cushion_scene(aspect));
             else {
-                std::fprintf(stderr, "--scene: expected mid_game, racked, mid_roll, cue_view, ball_in_hand, aim_overhead or cushion\n");
+                std::fprintf(stderr,
+                             "--scene: expected mid_game, racked, mid_roll, cue_view, "
+                             "ball_in_hand, aim_overhead or cushion\n");
                 return 2;
             }
         }
@@ -76,16 +87,19 @@ int main(int argc, char** argv) {
             target.resolve();
             glFinish();
             const auto end = std::chrono::steady_clock::now();
-            if (f >= 5) ms.push_back(std::chrono::duration<double, std::milli>(end - start).count());
+            if (f >= 5)
+                ms.push_back(std::chrono::duration<double, std::milli>(end - start).count());
         }
         if (!png.empty()) render::write_png(png, render::read_pixels(width, height));
         std::sort(ms.begin(), ms.end());
         const double median = ms[ms.size() / 2];
         const double p95 = ms[std::min(ms.size() - 1, ms.size() * 95 / 100)];
-        std::printf("{\"size\":\"%dx%d\",\"frames\":%d,\"samples\":%d,\"table_cache\":%s,\"renderer\":\"%s\",\"median_ms\":%.3f,"
-                    "\"p95_ms\":%.3f,\"fps\":%.1f}\n",
-                    width, height, frames, target.samples(), cache_table ? "true" : "false", context.renderer_name().c_str(), median, p95,
-                    1000.0 / median);
+        std::printf(
+            "{\"size\":\"%dx%d\",\"frames\":%d,\"samples\":%d,\"table_cache\":%s,\"renderer\":\"%"
+            "s\",\"median_ms\":%.3f,"
+            "\"p95_ms\":%.3f,\"fps\":%.1f}\n",
+            width, height, frames, target.samples(), cache_table ? "true" : "false",
+            context.renderer_name().c_str(), median, p95, 1000.0 / median);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "coolaaber-render-bench: %s\n", e.what());
         return 1;

@@ -5,11 +5,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <stdexcept>
-#include <utility>
-
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <stdexcept>
+#include <utility>
 
 #include "render/shaders.hpp"
 #include "render/table_mesh.hpp"
@@ -30,7 +29,7 @@ constexpr std::array<glm::vec3, 8> kColours = {{
     {0.48f, 0.07f, 0.07f},  // 7 maroon
 }};
 constexpr glm::vec3 kBlack{0.03f, 0.03f, 0.03f};
-constexpr glm::vec3 kClothColour{0.12f, 0.44f, 0.25f};   // sRGB: a tournament green
+constexpr glm::vec3 kClothColour{0.12f, 0.44f, 0.25f};     // sRGB: a tournament green
 constexpr glm::vec3 kBackground{0.005f, 0.0045f, 0.005f};  // linear
 
 struct Mesh {
@@ -44,13 +43,17 @@ Mesh upload(const std::vector<Vertex>& v) {
     glGenBuffers(1, &m.vbo);
     glBindVertexArray(m.vao);
     glBindBuffer(GL_ARRAY_BUFFER, m.vbo);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(v.size() * sizeof(Vertex)), v.data(), GL_STATIC_DRAW);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(v.size() * sizeof(Vertex)), v.data(),
+                 GL_STATIC_DRAW);
     glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, pos)));
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex),
+                          reinterpret_cast<void*>(offsetof(Vertex, pos)));
     glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, normal)));
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex),
+                          reinterpret_cast<void*>(offsetof(Vertex, normal)));
     glEnableVertexAttribArray(2);
-    glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, uv)));
+    glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(Vertex),
+                          reinterpret_cast<void*>(offsetof(Vertex, uv)));
     m.count = static_cast<GLsizei>(v.size());
     return m;
 }
@@ -62,7 +65,8 @@ GLuint upload_texture(const TextureData& t, bool srgb = false) {
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     const GLenum format = t.channels == 1 ? GL_RED : GL_RGB;
     const GLint internal = t.channels == 1 ? GL_R8 : srgb ? GL_SRGB8 : GL_RGB8;
-    glTexImage2D(GL_TEXTURE_2D, 0, internal, t.width, t.height, 0, format, GL_UNSIGNED_BYTE, t.pixels.data());
+    glTexImage2D(GL_TEXTURE_2D, 0, internal, t.width, t.height, 0, format, GL_UNSIGNED_BYTE,
+                 t.pixels.data());
     glGenerateMipmap(GL_TEXTURE_2D);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -77,15 +81,16 @@ struct SolidVertex {
 };
 
 /// A tapered cylinder from a (radius ra) to b (radius rb), colour per end.
-void add_lathe(std::vector<SolidVertex>& out, glm::vec3 a, glm::vec3 b, float ra, float rb, glm::vec3 ca,
-               glm::vec3 cb, int sides) {
+void add_lathe(std::vector<SolidVertex>& out, glm::vec3 a, glm::vec3 b, float ra, float rb,
+               glm::vec3 ca, glm::vec3 cb, int sides) {
     const glm::vec3 axis = glm::normalize(b - a);
     const glm::vec3 helper = std::abs(axis.z) < 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0);
     const glm::vec3 u = glm::normalize(glm::cross(axis, helper)), v = glm::cross(axis, u);
     for (int i = 0; i < sides; ++i) {
         const float t0 = 6.2831853f * static_cast<float>(i) / static_cast<float>(sides);
         const float t1 = 6.2831853f * static_cast<float>(i + 1) / static_cast<float>(sides);
-        const glm::vec3 n0 = std::cos(t0) * u + std::sin(t0) * v, n1 = std::cos(t1) * u + std::sin(t1) * v;
+        const glm::vec3 n0 = std::cos(t0) * u + std::sin(t0) * v,
+                        n1 = std::cos(t1) * u + std::sin(t1) * v;
         const SolidVertex p0{a + ra * n0, n0, ca}, p1{a + ra * n1, n1, ca}, q0{b + rb * n0, n0, cb},
             q1{b + rb * n1, n1, cb};
         out.insert(out.end(), {p0, p1, q1, p0, q1, q0});
@@ -93,8 +98,8 @@ void add_lathe(std::vector<SolidVertex>& out, glm::vec3 a, glm::vec3 b, float ra
 }
 
 /// A flat ribbon on the cloth along a polyline (the aim guide).
-void add_ribbon(std::vector<SolidVertex>& out, const std::vector<glm::vec2>& line, float half_width, float z,
-                glm::vec3 colour) {
+void add_ribbon(std::vector<SolidVertex>& out, const std::vector<glm::vec2>& line, float half_width,
+                float z, glm::vec3 colour) {
     for (std::size_t i = 0; i + 1 < line.size(); ++i) {
         const glm::vec2 d = line[i + 1] - line[i];
         if (glm::length(d) < 1e-6f) continue;
@@ -108,10 +113,13 @@ void add_ribbon(std::vector<SolidVertex>& out, const std::vector<glm::vec2>& lin
 
 /// A box-shaped slab from `lo` to `hi` (axis-aligned), all six faces.
 void add_box(std::vector<SolidVertex>& out, glm::vec3 lo, glm::vec3 hi, glm::vec3 colour) {
-    const glm::vec3 p[8] = {{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z},
-                            {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}};
-    const int faces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
-    const glm::vec3 normals[6] = {{0, 0, -1}, {0, 0, 1}, {0, -1, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}};
+    const glm::vec3 p[8] = {{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z},
+                            {lo.x, hi.y, lo.z}, {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z},
+                            {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}};
+    const int faces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                             {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+    const glm::vec3 normals[6] = {{0, 0, -1}, {0, 0, 1}, {0, -1, 0},
+                                  {1, 0, 0},  {0, 1, 0}, {-1, 0, 0}};
     for (int f = 0; f < 6; ++f) {
         const auto v = [&](int k) { return SolidVertex{p[faces[f][k]], normals[f], colour}; };
         out.insert(out.end(), {v(0), v(1), v(2), v(0), v(2), v(3)});
@@ -119,15 +127,16 @@ void add_box(std::vector<SolidVertex>& out, glm::vec3 lo, glm::vec3 hi, glm::vec
 }
 
 /// A flat quad on the cloth (z) from `lo` to `hi`.
-void add_patch(std::vector<SolidVertex>& out, glm::vec2 lo, glm::vec2 hi, float z, glm::vec3 colour) {
+void add_patch(std::vector<SolidVertex>& out, glm::vec2 lo, glm::vec2 hi, float z,
+               glm::vec3 colour) {
     const glm::vec3 up{0, 0, 1};
-    const SolidVertex a{{lo.x, lo.y, z}, up, colour}, b{{hi.x, lo.y, z}, up, colour}, c{{hi.x, hi.y, z}, up, colour},
-        d{{lo.x, hi.y, z}, up, colour};
+    const SolidVertex a{{lo.x, lo.y, z}, up, colour}, b{{hi.x, lo.y, z}, up, colour},
+        c{{hi.x, hi.y, z}, up, colour}, d{{lo.x, hi.y, z}, up, colour};
     out.insert(out.end(), {a, b, c, a, c, d});
 }
 
-void add_ring(std::vector<SolidVertex>& out, glm::vec2 centre, float radius, float half_width, float z,
-              glm::vec3 colour) {
+void add_ring(std::vector<SolidVertex>& out, glm::vec2 centre, float radius, float half_width,
+              float z, glm::vec3 colour) {
     std::vector<glm::vec2> circle;
     for (int i = 0; i <= 48; ++i) {
         const float t = 6.2831853f * static_cast<float>(i) / 48.0f;
@@ -153,12 +162,16 @@ glm::vec3 ball_colour(int id) {
     return {0.5f, 0.5f, 0.5f};
 }
 
-bool is_stripe(int id) { return id >= 9 && id <= 15; }
+bool is_stripe(int id) {
+    return id >= 9 && id <= 15;
+}
 
 BallView ball_view(const physics::BallState& s, double ball_radius, const glm::dquat& q) {
-    return {s.id,
-            {static_cast<float>(s.pos.x), static_cast<float>(s.pos.y), static_cast<float>(ball_radius)},
-            glm::quat(static_cast<float>(q.w), static_cast<float>(q.x), static_cast<float>(q.y), static_cast<float>(q.z))};
+    return {
+        s.id,
+        {static_cast<float>(s.pos.x), static_cast<float>(s.pos.y), static_cast<float>(ball_radius)},
+        glm::quat(static_cast<float>(q.w), static_cast<float>(q.x), static_cast<float>(q.y),
+                  static_cast<float>(q.z))};
 }
 
 struct Renderer::Impl {
@@ -175,12 +188,14 @@ struct Renderer::Impl {
     GLuint solid_vao = 0, solid_vbo = 0;
     // The table's programs, one per material (cloth, cushion, wood), and the cloth's bake.
     std::array<GLuint, 5> table_progs{};  // by TableMaterial; [3] bakes
-    GLuint ball_prog = 0, shadow_prog = 0, cushion_shadow_prog = 0, cue_shadow_prog = 0, solid_prog = 0;
+    GLuint ball_prog = 0, shadow_prog = 0, cushion_shadow_prog = 0, cue_shadow_prog = 0,
+           solid_prog = 0;
     GLuint cloth_tex = 0, wood_tex = 0, number_tex = 0;
     // The cloth's view-independent light, baked once over the cloth's footprint.
     GLuint cloth_light_tex = 0;
     glm::vec4 bake_rect{0.0f};
-    float baked_exposure = 0.0f;  // the cloth's baked colour is tone-mapped: re-baked when exposure changes
+    float baked_exposure =
+        0.0f;  // the cloth's baked colour is tone-mapped: re-baked when exposure changes
     std::array<glm::vec4, 3> lamps;
     // The static table's cache (colour and depth), valid for `cache_key`.
     GLuint cache_fbo = 0, cache_colour = 0, cache_depth = 0;
@@ -188,8 +203,8 @@ struct Renderer::Impl {
 
     void draw_table(const glm::mat4& view_proj, const glm::vec3& eye);
     /// Flat (lit = false, blended with `alpha`, no depth writes) or lit solid geometry.
-    void draw_solid(const std::vector<SolidVertex>& v, bool lit, float alpha, const glm::mat4& view_proj,
-                    const glm::vec3& eye);
+    void draw_solid(const std::vector<SolidVertex>& v, bool lit, float alpha,
+                    const glm::mat4& view_proj, const glm::vec3& eye);
     void set_table_uniforms(GLuint prog, const glm::mat4& view_proj, const glm::vec3& eye) const;
     void bake_cloth_light();
     bool use_cache(const FrameView& frame, int width, int height, const glm::mat4& view_proj);
@@ -203,21 +218,24 @@ struct Renderer::Impl {
 
     void set_common(GLuint prog, const glm::mat4& view_proj, const glm::vec3& eye) const {
         glUseProgram(prog);
-        glUniformMatrix4fv(glGetUniformLocation(prog, "u_view_proj"), 1, GL_FALSE, glm::value_ptr(view_proj));
+        glUniformMatrix4fv(glGetUniformLocation(prog, "u_view_proj"), 1, GL_FALSE,
+                           glm::value_ptr(view_proj));
         glUniform3fv(glGetUniformLocation(prog, "u_eye"), 1, glm::value_ptr(eye));
         glUniform4fv(glGetUniformLocation(prog, "u_lamps"), 3, glm::value_ptr(lamps[0]));
         // Lamp power: 1.0 at 1 m gives a well-exposed cloth under each lamp.
         glUniform3f(glGetUniformLocation(prog, "u_lamp_colour"), 0.8f, 0.74f, 0.64f);
         glUniform1f(glGetUniformLocation(prog, "u_exposure"), settings.exposure);
         glUniform3fv(glGetUniformLocation(prog, "u_background"), 1, glm::value_ptr(kBackground));
-        glUniform1f(glGetUniformLocation(prog, "u_fog_depth"), settings.fog ? dims.apron_depth * 0.9f : 0.0f);
+        glUniform1f(glGetUniformLocation(prog, "u_fog_depth"),
+                    settings.fog ? dims.apron_depth * 0.9f : 0.0f);
         glUniform3fv(glGetUniformLocation(prog, "u_cloth_colour"), 1, glm::value_ptr(kClothColour));
         const glm::vec3 cloth_linear = glm::pow(kClothColour, glm::vec3(2.2f));
         glUniform3fv(glGetUniformLocation(prog, "u_cloth_linear"), 1, glm::value_ptr(cloth_linear));
     }
 };
 
-void Renderer::Impl::set_table_uniforms(GLuint prog, const glm::mat4& view_proj, const glm::vec3& eye) const {
+void Renderer::Impl::set_table_uniforms(GLuint prog, const glm::mat4& view_proj,
+                                        const glm::vec3& eye) const {
     set_common(prog, view_proj, eye);
     glUniform1i(glGetUniformLocation(prog, "u_cloth_tex"), 0);
     glUniform1i(glGetUniformLocation(prog, "u_wood_tex"), 1);
@@ -227,7 +245,8 @@ void Renderer::Impl::set_table_uniforms(GLuint prog, const glm::mat4& view_proj,
     glUniform4f(glGetUniformLocation(prog, "u_table"), static_cast<float>(table.length()),
                 static_cast<float>(table.width()), dims.cushion_width, dims.rail_width);
     const physics::Vec2 foot = table.foot_spot();
-    glUniform2f(glGetUniformLocation(prog, "u_foot_spot"), static_cast<float>(foot.x), static_cast<float>(foot.y));
+    glUniform2f(glGetUniformLocation(prog, "u_foot_spot"), static_cast<float>(foot.x),
+                static_cast<float>(foot.y));
     glUniform1f(glGetUniformLocation(prog, "u_rail_height"), dims.rail_height);
     const glm::vec3 liner = tone_map(glm::vec3(0.012f, 0.010f, 0.009f), settings.exposure);
     glUniform3fv(glGetUniformLocation(prog, "u_liner_shown"), 1, glm::value_ptr(liner));
@@ -263,7 +282,8 @@ void Renderer::Impl::bake_cloth_light() {
     glViewport(0, 0, bw, bh);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
-    const glm::mat4 ortho = glm::ortho(bake_rect.x, bake_rect.x + bake_rect.z, bake_rect.y, bake_rect.y + bake_rect.w, -1.0f, 1.0f);
+    const glm::mat4 ortho = glm::ortho(bake_rect.x, bake_rect.x + bake_rect.z, bake_rect.y,
+                                       bake_rect.y + bake_rect.w, -1.0f, 1.0f);
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, wood_tex);
     glActiveTexture(GL_TEXTURE0);
@@ -278,7 +298,8 @@ void Renderer::Impl::bake_cloth_light() {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previous_fbo));
-    glViewport(previous_viewport[0], previous_viewport[1], previous_viewport[2], previous_viewport[3]);
+    glViewport(previous_viewport[0], previous_viewport[1], previous_viewport[2],
+               previous_viewport[3]);
 }
 
 void Renderer::Impl::draw_table(const glm::mat4& view_proj, const glm::vec3& eye) {
@@ -290,8 +311,10 @@ void Renderer::Impl::draw_table(const glm::mat4& view_proj, const glm::vec3& eye
     glBindTexture(GL_TEXTURE_2D, cloth_light_tex);
     glActiveTexture(GL_TEXTURE0);
     // Rails and cushions first, so the depth test spares the cloth hidden under them.
-    const std::array<std::pair<const Mesh*, GLuint>, 4> parts = {
-        {{&rail_tops, table_progs[4]}, {&rails, table_progs[2]}, {&cushions, table_progs[1]}, {&cloth, table_progs[0]}}};
+    const std::array<std::pair<const Mesh*, GLuint>, 4> parts = {{{&rail_tops, table_progs[4]},
+                                                                  {&rails, table_progs[2]},
+                                                                  {&cushions, table_progs[1]},
+                                                                  {&cloth, table_progs[0]}}};
     for (const auto& [mesh, prog] : parts) {
         set_table_uniforms(prog, view_proj, eye);
         glBindVertexArray(mesh->vao);
@@ -299,8 +322,8 @@ void Renderer::Impl::draw_table(const glm::mat4& view_proj, const glm::vec3& eye
     }
 }
 
-void Renderer::Impl::draw_solid(const std::vector<SolidVertex>& v, bool lit, float alpha, const glm::mat4& view_proj,
-                                const glm::vec3& eye) {
+void Renderer::Impl::draw_solid(const std::vector<SolidVertex>& v, bool lit, float alpha,
+                                const glm::mat4& view_proj, const glm::vec3& eye) {
     if (v.empty()) return;
     set_common(solid_prog, view_proj, eye);
     glUniform1i(glGetUniformLocation(solid_prog, "u_lit"), lit ? 1 : 0);
@@ -313,7 +336,8 @@ void Renderer::Impl::draw_solid(const std::vector<SolidVertex>& v, bool lit, flo
     }
     glBindVertexArray(solid_vao);
     glBindBuffer(GL_ARRAY_BUFFER, solid_vbo);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(v.size() * sizeof(SolidVertex)), v.data(), GL_STREAM_DRAW);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(v.size() * sizeof(SolidVertex)), v.data(),
+                 GL_STREAM_DRAW);
     glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(v.size()));
     if (blend) {
         glDepthMask(GL_TRUE);
@@ -321,7 +345,8 @@ void Renderer::Impl::draw_solid(const std::vector<SolidVertex>& v, bool lit, flo
     }
 }
 
-bool Renderer::Impl::use_cache(const FrameView& frame, int width, int height, const glm::mat4& view_proj) {
+bool Renderer::Impl::use_cache(const FrameView& frame, int width, int height,
+                               const glm::mat4& view_proj) {
     GLint target = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
     if (target == 0) return false;
@@ -333,8 +358,9 @@ bool Renderer::Impl::use_cache(const FrameView& frame, int width, int height, co
                                           GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &depth_bits);
     glGetIntegerv(GL_SAMPLES, &samples);
     if (depth_bits != 24) return false;
-    std::vector<float> key = {static_cast<float>(width), static_cast<float>(height), static_cast<float>(samples),
-                              settings.fog ? 1.0f : 0.0f, settings.exposure};
+    std::vector<float> key = {static_cast<float>(width), static_cast<float>(height),
+                              static_cast<float>(samples), settings.fog ? 1.0f : 0.0f,
+                              settings.exposure};
     const float* vp = glm::value_ptr(view_proj);
     key.insert(key.end(), vp, vp + 16);
     (void)frame;
@@ -346,10 +372,13 @@ bool Renderer::Impl::use_cache(const FrameView& frame, int width, int height, co
         glBindRenderbuffer(GL_RENDERBUFFER, cache_colour);
         glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, width, height);
         glBindRenderbuffer(GL_RENDERBUFFER, cache_depth);
-        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, width, height);
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, width,
+                                         height);
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, cache_fbo);
-        glFramebufferRenderbuffer(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, cache_colour);
-        glFramebufferRenderbuffer(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, cache_depth);
+        glFramebufferRenderbuffer(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+                                  cache_colour);
+        glFramebufferRenderbuffer(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                                  cache_depth);
         if (glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
             free_cache();
             glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target));
@@ -361,7 +390,8 @@ bool Renderer::Impl::use_cache(const FrameView& frame, int width, int height, co
     }
     glBindFramebuffer(GL_READ_FRAMEBUFFER, cache_fbo);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target));
-    glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    glBlitFramebuffer(0, 0, width, height, 0, 0, width, height,
+                      GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
     return true;
 }
 
@@ -396,9 +426,11 @@ Renderer::Renderer(const physics::Table& table, double ball_radius, RenderSettin
     for (std::size_t i = 0; i + 2 < mesh.rails.size(); i += 3) {
         bool top = true;
         for (std::size_t k = i; k < i + 3; ++k)
-            top = top && std::abs(mesh.rails[k].normal.z) > 0.999f && std::abs(mesh.rails[k].pos.z - m.dims.rail_height) < 1e-5f;
-        (top ? tops : rest).insert((top ? tops : rest).end(), mesh.rails.begin() + static_cast<std::ptrdiff_t>(i),
-                                   mesh.rails.begin() + static_cast<std::ptrdiff_t>(i + 3));
+            top = top && std::abs(mesh.rails[k].normal.z) > 0.999f &&
+                  std::abs(mesh.rails[k].pos.z - m.dims.rail_height) < 1e-5f;
+        (top ? tops : rest)
+            .insert((top ? tops : rest).end(), mesh.rails.begin() + static_cast<std::ptrdiff_t>(i),
+                    mesh.rails.begin() + static_cast<std::ptrdiff_t>(i + 3));
     }
     m.rails = upload(rest);
     m.rail_tops = upload(tops);
@@ -445,7 +477,8 @@ Renderer::Renderer(const physics::Table& table, double ball_radius, RenderSettin
     // Three shaded lamps along the table's long axis, about 1 m above the cloth.
     const float L = static_cast<float>(table.length()), W = static_cast<float>(table.width());
     for (int i = 0; i < 3; ++i)
-        m.lamps[static_cast<std::size_t>(i)] = {L * (0.5f + 0.3f * static_cast<float>(i - 1)), W / 2, 1.0f, 0.16f};
+        m.lamps[static_cast<std::size_t>(i)] = {L * (0.5f + 0.3f * static_cast<float>(i - 1)),
+                                                W / 2, 1.0f, 0.16f};
     m.bake_cloth_light();
 }
 
@@ -460,7 +493,8 @@ Renderer::~Renderer() {
     glDeleteBuffers(1, &m.solid_vbo);
     glDeleteVertexArrays(1, &m.solid_vao);
     for (GLuint p : m.table_progs) glDeleteProgram(p);
-    for (GLuint p : {m.ball_prog, m.shadow_prog, m.cushion_shadow_prog, m.cue_shadow_prog, m.solid_prog})
+    for (GLuint p :
+         {m.ball_prog, m.shadow_prog, m.cushion_shadow_prog, m.cue_shadow_prog, m.solid_prog})
         glDeleteProgram(p);
     glDeleteTextures(1, &m.cloth_light_tex);
     glDeleteTextures(1, &m.cloth_tex);
@@ -469,7 +503,9 @@ Renderer::~Renderer() {
     m.free_cache();
 }
 
-RenderSettings& Renderer::settings() { return impl_->settings; }
+RenderSettings& Renderer::settings() {
+    return impl_->settings;
+}
 
 void Renderer::draw(const FrameView& frame, int width, int height) {
     Impl& m = *impl_;
@@ -482,7 +518,8 @@ void Renderer::draw(const FrameView& frame, int width, int height) {
     const glm::vec3 bg = glm::pow(kBackground, glm::vec3(1.0f / 2.2f));
     glClearColor(bg.x, bg.y, bg.z, 1.0f);
     glClearDepth(1.0);
-    glDisable(GL_SCISSOR_TEST);  // a UI drawn before may have left it on; clear and copy need it off
+    glDisable(
+        GL_SCISSOR_TEST);  // a UI drawn before may have left it on; clear and copy need it off
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
     glDisable(GL_CULL_FACE);
@@ -504,8 +541,8 @@ void Renderer::draw(const FrameView& frame, int width, int height) {
     const float cue_length = 1.47f;
     if (frame.cue) {
         const CueView& c = *frame.cue;
-        const glm::vec3 dir{std::cos(c.heading) * std::cos(c.elevation), std::sin(c.heading) * std::cos(c.elevation),
-                            -std::sin(c.elevation)};
+        const glm::vec3 dir{std::cos(c.heading) * std::cos(c.elevation),
+                            std::sin(c.heading) * std::cos(c.elevation), -std::sin(c.elevation)};
         cue_axis = CueAxis{dir, glm::vec3(c.cue_ball, m.radius) - (m.radius + c.pull_back) * dir};
     }
 
@@ -528,8 +565,8 @@ void Renderer::draw(const FrameView& frame, int width, int height) {
         const float near_cushion = 4.0f * m.radius, Lt = static_cast<float>(m.table.length()),
                     Wt = static_cast<float>(m.table.width());
         for (const BallView& b : frame.balls) {
-            const bool close = b.centre.x < near_cushion || b.centre.x > Lt - near_cushion || b.centre.y < near_cushion ||
-                               b.centre.y > Wt - near_cushion;
+            const bool close = b.centre.x < near_cushion || b.centre.x > Lt - near_cushion ||
+                               b.centre.y < near_cushion || b.centre.y > Wt - near_cushion;
             if (close && near_count < 16) near[static_cast<std::size_t>(near_count++)] = b.centre;
         }
         if (near_count > 0) {
@@ -546,7 +583,8 @@ void Renderer::draw(const FrameView& frame, int width, int height) {
                 glm::vec2 lo{1e9f}, hi{-1e9f};
                 bool behind = false;
                 for (int corner = 0; corner < 8; ++corner) {
-                    const glm::vec3 p{c.x + (corner & 1 ? 4.0f : -4.0f) * m.radius, c.y + (corner & 2 ? 4.0f : -4.0f) * m.radius,
+                    const glm::vec3 p{c.x + (corner & 1 ? 4.0f : -4.0f) * m.radius,
+                                      c.y + (corner & 2 ? 4.0f : -4.0f) * m.radius,
                                       corner & 4 ? m.dims.rail_height : 0.0f};
                     const glm::vec4 clip = view_proj * glm::vec4(p, 1.0f);
                     if (clip.w <= 1e-4f) {
@@ -562,9 +600,12 @@ void Renderer::draw(const FrameView& frame, int width, int height) {
                 } else {
                     if (hi.x < -1.0f || hi.y < -1.0f || lo.x > 1.0f || lo.y > 1.0f) continue;
                     const auto px = [](float v, int size) {
-                        return std::clamp(static_cast<int>(std::floor((0.5f * v + 0.5f) * static_cast<float>(size))), 0, size);
+                        return std::clamp(static_cast<int>(std::floor((0.5f * v + 0.5f) *
+                                                                      static_cast<float>(size))),
+                                          0, size);
                     };
-                    const int x0 = px(lo.x, width), y0 = px(lo.y, height), x1 = px(hi.x, width) + 1, y1 = px(hi.y, height) + 1;
+                    const int x0 = px(lo.x, width), y0 = px(lo.y, height), x1 = px(hi.x, width) + 1,
+                              y1 = px(hi.y, height) + 1;
                     glScissor(x0, y0, std::min(x1, width) - x0, std::min(y1, height) - y0);
                 }
                 glUniform3fv(u_balls, 1, glm::value_ptr(c));
@@ -578,10 +619,11 @@ void Renderer::draw(const FrameView& frame, int width, int height) {
             // the shadow of its highest point.
             const glm::vec3 a = cue_axis->tip, b = cue_axis->tip - cue_length * cue_axis->dir;
             const float reach = 0.05f + 1.6f * std::max(a.z, b.z);
-            const glm::vec4 rect{std::min(a.x, b.x) - reach, std::min(a.y, b.y) - reach, std::max(a.x, b.x) + reach,
-                                 std::max(a.y, b.y) + reach};
+            const glm::vec4 rect{std::min(a.x, b.x) - reach, std::min(a.y, b.y) - reach,
+                                 std::max(a.x, b.x) + reach, std::max(a.y, b.y) + reach};
             m.set_common(m.cue_shadow_prog, view_proj, eye);
-            glUniform4fv(glGetUniformLocation(m.cue_shadow_prog, "u_rect"), 1, glm::value_ptr(rect));
+            glUniform4fv(glGetUniformLocation(m.cue_shadow_prog, "u_rect"), 1,
+                         glm::value_ptr(rect));
             glUniform3fv(glGetUniformLocation(m.cue_shadow_prog, "u_cue_a"), 1, glm::value_ptr(a));
             glUniform3fv(glGetUniformLocation(m.cue_shadow_prog, "u_cue_b"), 1, glm::value_ptr(b));
             glUniform2f(glGetUniformLocation(m.cue_shadow_prog, "u_cue_r"), 0.0063f, 0.0145f);
@@ -598,7 +640,8 @@ void Renderer::draw(const FrameView& frame, int width, int height) {
         add_ribbon(guide, aim.cue_path, 0.0012f, 0.0006f, {0.95f, 0.95f, 0.95f});
         add_ribbon(guide, aim.object_path, 0.0012f, 0.0006f, {1.0f, 0.85f, 0.3f});
         add_ribbon(guide, aim.cue_after, 0.0009f, 0.0006f, {0.6f, 0.8f, 1.0f});
-        if (aim.ghost) add_ring(guide, *aim.ghost, m.radius, 0.0012f, 0.0007f, {0.95f, 0.95f, 0.95f});
+        if (aim.ghost)
+            add_ring(guide, *aim.ghost, m.radius, 0.0012f, 0.0007f, {0.95f, 0.95f, 0.95f});
     }
     m.draw_solid(guide, false, 0.7f, view_proj, eye);
 
@@ -613,7 +656,8 @@ void Renderer::draw(const FrameView& frame, int width, int height) {
             add_patch(kitchen, {0.0f, 0.0f}, {L / 4, W}, 0.0005f, {0.85f, 0.92f, 1.0f});
             m.draw_solid(kitchen, false, 0.07f, view_proj, eye);
             std::vector<SolidVertex> head_string;
-            add_ribbon(head_string, {{L / 4, 0.0f}, {L / 4, W}}, 0.0015f, 0.0006f, {0.9f, 0.95f, 1.0f});
+            add_ribbon(head_string, {{L / 4, 0.0f}, {L / 4, W}}, 0.0015f, 0.0006f,
+                       {0.9f, 0.95f, 1.0f});
             m.draw_solid(head_string, false, 0.5f, view_proj, eye);
         }
         std::vector<SolidVertex> ring;
@@ -626,13 +670,15 @@ void Renderer::draw(const FrameView& frame, int width, int height) {
         std::vector<SolidVertex> tray;
         const float out = m.dims.cushion_width + m.dims.rail_width;
         const float len = tray_length(m.radius), x0 = L / 2 - len / 2, x1 = L / 2 + len / 2;
-        const float wall = m.dims.tray_wall, floor_z = m.dims.tray_floor, top = floor_z + 1.3f * m.radius;
+        const float wall = m.dims.tray_wall, floor_z = m.dims.tray_floor,
+                    top = floor_z + 1.3f * m.radius;
         const float y_in = -out, y_out = -out - m.dims.tray_width - 2 * wall;
         const glm::vec3 wood{0.22f, 0.08f, 0.04f}, lining{0.05f, 0.05f, 0.05f};
-        add_box(tray, {x0, y_out, floor_z - wall}, {x1, y_in, floor_z}, lining);         // floor
-        add_box(tray, {x0, y_out, floor_z - wall}, {x1, y_out + wall, top}, wood);       // outer wall
-        add_box(tray, {x0, y_in - wall, floor_z - wall}, {x1, y_in, top - 0.5f * m.radius}, wood);  // inner wall
-        add_box(tray, {x0 - wall, y_out, floor_z - wall}, {x0, y_in, top}, wood);        // ends
+        add_box(tray, {x0, y_out, floor_z - wall}, {x1, y_in, floor_z}, lining);    // floor
+        add_box(tray, {x0, y_out, floor_z - wall}, {x1, y_out + wall, top}, wood);  // outer wall
+        add_box(tray, {x0, y_in - wall, floor_z - wall}, {x1, y_in, top - 0.5f * m.radius},
+                wood);                                                             // inner wall
+        add_box(tray, {x0 - wall, y_out, floor_z - wall}, {x0, y_in, top}, wood);  // ends
         add_box(tray, {x1, y_out, floor_z - wall}, {x1 + wall, y_in, top}, wood);
         m.draw_solid(tray, true, 1.0f, view_proj, eye);
     }
@@ -656,10 +702,13 @@ void Renderer::draw(const FrameView& frame, int width, int height) {
     glUniform1f(u_alpha, 1.0f);
     // The tray's balls after the table's, numbers up and upright as seen from the overhead camera.
     std::vector<BallView> balls(frame.balls.begin(), frame.balls.end());
-    const glm::quat numbers_up = glm::angleAxis(-1.5707963f, glm::vec3(0, 0, 1)) * glm::angleAxis(-1.5707963f, glm::vec3(0, 1, 0));
+    const glm::quat numbers_up = glm::angleAxis(-1.5707963f, glm::vec3(0, 0, 1)) *
+                                 glm::angleAxis(-1.5707963f, glm::vec3(0, 1, 0));
     for (std::size_t k = 0; k < frame.tray.size() && k < 15; ++k)
-        balls.push_back({frame.tray[k], tray_slot(m.table, m.radius, static_cast<int>(k)), numbers_up});
-    if (frame.ball_in_hand) balls.push_back({0, {frame.ball_in_hand->pos, m.radius}, glm::quat(1, 0, 0, 0)});
+        balls.push_back(
+            {frame.tray[k], tray_slot(m.table, m.radius, static_cast<int>(k)), numbers_up});
+    if (frame.ball_in_hand)
+        balls.push_back({0, {frame.ball_in_hand->pos, m.radius}, glm::quat(1, 0, 0, 0)});
     glBindVertexArray(m.quad_vao);
     for (std::size_t i = 0; i < balls.size(); ++i) {
         const BallView& b = balls[i];
@@ -690,10 +739,14 @@ void Renderer::draw(const FrameView& frame, int width, int height) {
         std::vector<SolidVertex> cue;
         const float len = cue_length;
         auto at = [&](float s) { return tip - s * dir; };
-        add_lathe(cue, at(0.0f), at(0.010f), 0.0062f, 0.0064f, {0.18f, 0.30f, 0.62f}, {0.18f, 0.30f, 0.62f}, 20);
-        add_lathe(cue, at(0.010f), at(0.035f), 0.0064f, 0.0065f, {0.92f, 0.90f, 0.84f}, {0.92f, 0.90f, 0.84f}, 20);
-        add_lathe(cue, at(0.035f), at(0.75f), 0.0065f, 0.0105f, {0.86f, 0.74f, 0.52f}, {0.80f, 0.66f, 0.44f}, 20);
-        add_lathe(cue, at(0.75f), at(len), 0.0105f, 0.0145f, {0.20f, 0.07f, 0.04f}, {0.08f, 0.03f, 0.02f}, 20);
+        add_lathe(cue, at(0.0f), at(0.010f), 0.0062f, 0.0064f, {0.18f, 0.30f, 0.62f},
+                  {0.18f, 0.30f, 0.62f}, 20);
+        add_lathe(cue, at(0.010f), at(0.035f), 0.0064f, 0.0065f, {0.92f, 0.90f, 0.84f},
+                  {0.92f, 0.90f, 0.84f}, 20);
+        add_lathe(cue, at(0.035f), at(0.75f), 0.0065f, 0.0105f, {0.86f, 0.74f, 0.52f},
+                  {0.80f, 0.66f, 0.44f}, 20);
+        add_lathe(cue, at(0.75f), at(len), 0.0105f, 0.0145f, {0.20f, 0.07f, 0.04f},
+                  {0.08f, 0.03f, 0.02f}, 20);
         m.draw_solid(cue, true, 1.0f, view_proj, eye);
     }
     glBindVertexArray(0);
@@ -709,15 +762,18 @@ OffscreenTarget::OffscreenTarget(int width, int height, int samples)
     glBindRenderbuffer(GL_RENDERBUFFER, resolve_colour_);
     glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
     glBindFramebuffer(GL_FRAMEBUFFER, resolve_fbo_);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, resolve_colour_);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+                              resolve_colour_);
 
     glGenFramebuffers(1, &draw_fbo_);
     glGenRenderbuffers(1, &draw_colour_);
     glGenRenderbuffers(1, &draw_depth_);
     glBindRenderbuffer(GL_RENDERBUFFER, draw_colour_);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_ > 1 ? samples_ : 0, GL_RGBA8, width, height);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_ > 1 ? samples_ : 0, GL_RGBA8, width,
+                                     height);
     glBindRenderbuffer(GL_RENDERBUFFER, draw_depth_);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_ > 1 ? samples_ : 0, GL_DEPTH_COMPONENT24, width, height);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_ > 1 ? samples_ : 0,
+                                     GL_DEPTH_COMPONENT24, width, height);
     glBindFramebuffer(GL_FRAMEBUFFER, draw_fbo_);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, draw_colour_);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, draw_depth_);
@@ -741,7 +797,8 @@ void OffscreenTarget::bind() {
 void OffscreenTarget::resolve() {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, draw_fbo_);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo_);
-    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT,
+                      GL_NEAREST);
     glBindFramebuffer(GL_FRAMEBUFFER, resolve_fbo_);
 }
 

@@ -4,14 +4,13 @@
 // context current; it must be destroyed while that context is still current.
 #pragma once
 
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
 #include <memory>
 #include <optional>
 #include <span>
 #include <string>
 #include <vector>
-
-#include <glm/glm.hpp>
-#include <glm/gtc/quaternion.hpp>
 
 #include "physics/ball_state.hpp"
 #include "physics/table.hpp"
@@ -22,17 +21,17 @@ namespace render {
 
 /// One ball as drawn.
 struct BallView {
-    int id = 0;                     ///< 0 cue ball, 1–15 object balls
-    glm::vec3 centre{0.0f};         ///< (unit: m), table frame; z = R on the cloth
+    int id = 0;                         ///< 0 cue ball, 1–15 object balls
+    glm::vec3 centre{0.0f};             ///< (unit: m), table frame; z = R on the cloth
     glm::quat orientation{1, 0, 0, 0};  ///< ball frame → table frame
 };
 
 /// The cue stick: where its tip is, which way it points, how far it is drawn back.
 struct CueView {
-    glm::vec2 cue_ball{0.0f};   ///< cue-ball centre (unit: m)
-    float heading = 0.0f;       ///< direction of the stroke, from +x counter-clockwise (unit: rad)
-    float elevation = 0.0f;     ///< butt raised by this angle (unit: rad)
-    float pull_back = 0.05f;    ///< gap between the tip and the ball (unit: m)
+    glm::vec2 cue_ball{0.0f};  ///< cue-ball centre (unit: m)
+    float heading = 0.0f;      ///< direction of the stroke, from +x counter-clockwise (unit: rad)
+    float elevation = 0.0f;    ///< butt raised by this angle (unit: rad)
+    float pull_back = 0.05f;   ///< gap between the tip and the ball (unit: m)
 };
 
 /// The aim guide: polylines on the cloth and a ghost ball, all from the physics engine.
@@ -52,7 +51,7 @@ struct BallInHandView {
 
 /// Everything one frame shows. Spans must stay valid during draw().
 struct FrameView {
-    std::span<const BallView> balls;   ///< pocketed balls simply left out
+    std::span<const BallView> balls;  ///< pocketed balls simply left out
     Camera camera;
     std::optional<CueView> cue;
     const AimView* aim = nullptr;
@@ -65,9 +64,9 @@ struct FrameView {
 
 /// Quality switches (defaults: everything on).
 struct RenderSettings {
-    bool shadows = true;     ///< soft ball shadows and contact occlusion on the cloth
-    bool fog = true;         ///< the table's lower part fades into the background
-    float exposure = 1.0f;   ///< scale of all light (unit: 1)
+    bool shadows = true;    ///< soft ball shadows and contact occlusion on the cloth
+    bool fog = true;        ///< the table's lower part fades into the background
+    float exposure = 1.0f;  ///< scale of all light (unit: 1)
     /// Draw the table once per camera and size into a cache and copy it each frame (the
     /// overhead camera is fixed). Used only when the bound framebuffer is an FBO with a
     /// 24-bit depth attachment (OffscreenTarget); otherwise the table is drawn every frame.
@@ -82,10 +81,11 @@ glm::vec3 ball_colour(int id);
 bool is_stripe(int id);
 
 /// A ball on the cloth from a physics state (z = R).
-BallView ball_view(const physics::BallState& state, double ball_radius, const glm::dquat& orientation);
+BallView ball_view(const physics::BallState& state, double ball_radius,
+                   const glm::dquat& orientation);
 
 class Renderer {
-public:
+  public:
     Renderer(const physics::Table& table, double ball_radius, RenderSettings settings = {});
     ~Renderer();
     Renderer(const Renderer&) = delete;
@@ -96,7 +96,7 @@ public:
 
     RenderSettings& settings();
 
-private:
+  private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };
@@ -104,7 +104,7 @@ private:
 /// An offscreen target: a multisampled framebuffer (when `samples` > 1 and supported),
 /// resolved into a plain RGBA8 one that read_pixels() can read.
 class OffscreenTarget {
-public:
+  public:
     OffscreenTarget(int width, int height, int samples = 4);
     ~OffscreenTarget();
     OffscreenTarget(const OffscreenTarget&) = delete;
@@ -117,7 +117,7 @@ public:
     int height() const { return height_; }
     int samples() const { return samples_; }
 
-private:
+  private:
     int width_, height_, samples_;
     unsigned draw_fbo_ = 0, draw_colour_ = 0, draw_depth_ = 0;
     unsigned resolve_fbo_ = 0, resolve_colour_ = 0;

@@ -19,7 +19,8 @@ std::vector<BallView> views_at(const physics::Shot& shot, double t, double radiu
         const int id = shot.ball_id(i);
         const physics::BallState s = shot.state_at(id, t);
         if (s.motion == physics::Motion::pocketed) continue;
-        out.push_back(ball_view(s, radius, integrate_orientation(shot, id, 0.0, t, initial_orientation(id))));
+        out.push_back(
+            ball_view(s, radius, integrate_orientation(shot, id, 0.0, t, initial_orientation(id))));
     }
     return out;
 }
@@ -50,7 +51,8 @@ DemoScene racked_scene(float aspect) {
     const physics::Params params;
     s.table = physics::build_table(*physics::table_preset("9ft"));
     s.ball_radius = params.ball_radius;
-    for (const physics::BallState& b : physics::rack(physics::RackType::eight_ball, s.table, params, 7))
+    for (const physics::BallState& b :
+         physics::rack(physics::RackType::eight_ball, s.table, params, 7))
         s.balls.push_back(ball_view(b, s.ball_radius, initial_orientation(b.id)));
     s.camera = overhead_camera(s.table, aspect);
     return s;
@@ -124,10 +126,12 @@ DemoScene cushion_scene(float aspect) {
     s.ball_radius = params.ball_radius;
     const float R = static_cast<float>(s.ball_radius), L = static_cast<float>(s.table.length()),
                 W = static_cast<float>(s.table.width());
-    const glm::vec3 spots[] = {{0.30f * L, W - R - 0.001f, R}, {0.30f * L + 0.09f, W - R - 0.001f, R},
+    const glm::vec3 spots[] = {{0.30f * L, W - R - 0.001f, R},
+                               {0.30f * L + 0.09f, W - R - 0.001f, R},
                                {0.30f * L + 0.20f, W - R - 0.03f, R}};
     const int ids[] = {3, 10, 8};
-    for (int k = 0; k < 3; ++k) s.balls.push_back({ids[k], spots[k], glm::quat(initial_orientation(ids[k]))});
+    for (int k = 0; k < 3; ++k)
+        s.balls.push_back({ids[k], spots[k], glm::quat(initial_orientation(ids[k]))});
     s.camera.target = {0.30f * L + 0.10f, W - 0.02f, 0.02f};
     s.camera.eye = {0.30f * L - 0.05f, W - 0.45f, 0.17f};
     s.camera.up = {0, 0, 1};

@@ -22,7 +22,9 @@ struct DemoScene {
     std::optional<BallInHandView> ball_in_hand;
     std::vector<int> tray;
 
-    FrameView frame() const { return {balls, camera, cue, show_aim ? &aim : nullptr, ball_in_hand, tray}; }
+    FrameView frame() const {
+        return {balls, camera, cue, show_aim ? &aim : nullptr, ball_in_hand, tray};
+    }
 };
 
 /// 9 ft table, 8-ball rack with seed 7, cue ball on the head spot, overhead camera.

@@ -8,8 +8,9 @@
 namespace render {
 
 std::string shader_source(std::string_view body, GlslTarget target) {
-    std::string s = target == GlslTarget::gl33 ? "#version 330 core\n"
-                                               : "#version 300 es\nprecision highp float;\nprecision highp int;\n";
+    std::string s = target == GlslTarget::gl33
+                        ? "#version 330 core\n"
+                        : "#version 300 es\nprecision highp float;\nprecision highp int;\n";
     s += body;
     return s;
 }
@@ -34,9 +35,12 @@ unsigned compile(GLenum type, const std::string& source) {
 
 }  // namespace
 
-unsigned build_program(std::string_view vertex_body, std::string_view fragment_body, GlslTarget target) {
+unsigned build_program(std::string_view vertex_body, std::string_view fragment_body,
+                       GlslTarget target) {
     GLuint vs = compile(GL_VERTEX_SHADER, shader_source(vertex_body, target));
-    GLuint fs = compile(GL_FRAGMENT_SHADER, shader_source(std::string(glsl::kCommon) + std::string(fragment_body), target));
+    GLuint fs =
+        compile(GL_FRAGMENT_SHADER,
+                shader_source(std::string(glsl::kCommon) + std::string(fragment_body), target));
     GLuint p = glCreateProgram();
     glAttachShader(p, vs);
     glAttachShader(p, fs);
@@ -161,11 +165,11 @@ void main() {
 )";
 
 // The table's materials. The program is built once per material with `kMaterial` set
-// (table_fragment_source; 4 is the rail tops): llvmpipe runs both sides of every branch, so one shader for all
-// materials would pay for all of them on every pixel. The cloth's light is view-independent
-// (diffuse lamps, painted pockets, liner, foot spot), so material 3 bakes it once into a
-// texture over the table's footprint and the cloth (material 0) only samples it; so does
-// the rail tops' diffuse light, wood grain, sights and leather lips (material 4 adds highlights).
+// (table_fragment_source; 4 is the rail tops): llvmpipe runs both sides of every branch, so one
+// shader for all materials would pay for all of them on every pixel. The cloth's light is
+// view-independent (diffuse lamps, painted pockets, liner, foot spot), so material 3 bakes it once
+// into a texture over the table's footprint and the cloth (material 0) only samples it; so does the
+// rail tops' diffuse light, wood grain, sights and leather lips (material 4 adds highlights).
 const char* const kTableFrag = R"(
 in vec3 v_pos;
 in vec3 v_normal;
@@ -584,7 +588,8 @@ void main() {
 }  // namespace glsl
 
 std::string table_fragment_source(TableMaterial material) {
-    return "const int kMaterial = " + std::to_string(static_cast<int>(material)) + ";\n" + glsl::kTableFrag;
+    return "const int kMaterial = " + std::to_string(static_cast<int>(material)) + ";\n" +
+           glsl::kTableFrag;
 }
 
 }  // namespace render

@@ -22,17 +22,17 @@ enum class TableMaterial { cloth = 0, cushion = 1, wood = 2, cloth_bake = 3, rai
 std::string table_fragment_source(TableMaterial material);
 
 namespace glsl {
-extern const char* const kCommon;       ///< lamps, tone mapping, fog (included by the fragment shaders)
+extern const char* const kCommon;  ///< lamps, tone mapping, fog (included by the fragment shaders)
 extern const char* const kTableVert;
-extern const char* const kTableFrag;    ///< needs `const int kMaterial` first: table_fragment_source
+extern const char* const kTableFrag;  ///< needs `const int kMaterial` first: table_fragment_source
 extern const char* const kBallVert;
 extern const char* const kBallFrag;
 extern const char* const kShadowVert;
 extern const char* const kShadowFrag;
 extern const char* const kCushionShadowFrag;  ///< with kTableVert: ball shadows on the cushions
-extern const char* const kCueShadowVert;  ///< the cue's soft shadow on the cloth
+extern const char* const kCueShadowVert;      ///< the cue's soft shadow on the cloth
 extern const char* const kCueShadowFrag;
-extern const char* const kSolidVert;    ///< cue stick, aim guide: lit or flat-coloured geometry
+extern const char* const kSolidVert;  ///< cue stick, aim guide: lit or flat-coloured geometry
 extern const char* const kSolidFrag;
 }  // namespace glsl
 

@@ -8,7 +8,9 @@ namespace render {
 
 namespace {
 
-glm::vec2 v2(physics::Vec2 p) { return {static_cast<float>(p.x), static_cast<float>(p.y)}; }
+glm::vec2 v2(physics::Vec2 p) {
+    return {static_cast<float>(p.x), static_cast<float>(p.y)};
+}
 
 void add_tri(std::vector<Vertex>& out, const Vertex& a, const Vertex& b, const Vertex& c) {
     out.push_back(a);
@@ -29,10 +31,10 @@ void add_quad(std::vector<Vertex>& out, glm::vec3 a, glm::vec3 b, glm::vec3 c, g
 
 /// One cushion: its nose line from one pocket's jaw round to the next pocket's jaw.
 struct CushionOutline {
-    std::vector<glm::vec2> nose;     ///< points of the nose line at nose height
-    std::vector<glm::vec2> normal;   ///< outward (toward the balls) at each point
-    glm::vec2 rail_normal;           ///< the rail face's normal (toward the balls)
-    glm::vec2 rail_point;            ///< a point on the rail face
+    std::vector<glm::vec2> nose;    ///< points of the nose line at nose height
+    std::vector<glm::vec2> normal;  ///< outward (toward the balls) at each point
+    glm::vec2 rail_normal;          ///< the rail face's normal (toward the balls)
+    glm::vec2 rail_point;           ///< a point on the rail face
 };
 
 const physics::CushionLine* nearest_facing(const physics::Table& t, physics::Vec2 p) {
@@ -104,12 +106,17 @@ CushionOutline outline_of(const physics::Table& t, const physics::CushionLine& r
 void add_cushion(std::vector<Vertex>& out, const CushionOutline& o, const TableDims& d) {
     const std::size_t n = o.nose.size();
     // Rows of the profile, from the cloth under the nose up over the top to the rail.
-    struct Row { float back; float z; };  // back: distance behind the nose point; z: height
-    const Row rows[] = {{0.012f, 0.0f}, {0.0f, d.cushion_height}, {0.006f, d.cushion_height + 0.0045f}};
+    struct Row {
+        float back;
+        float z;
+    };  // back: distance behind the nose point; z: height
+    const Row rows[] = {
+        {0.012f, 0.0f}, {0.0f, d.cushion_height}, {0.006f, d.cushion_height + 0.0045f}};
     auto at = [&](std::size_t i, const Row& r) {
         return glm::vec3(o.nose[i] - r.back * o.normal[i], r.z);
     };
-    // The back of the cushion: the nose point pushed straight back to cushion_width behind the rail face.
+    // The back of the cushion: the nose point pushed straight back to cushion_width behind the rail
+    // face.
     auto back = [&](std::size_t i) {
         float depth = glm::dot(o.rail_point - o.nose[i], o.rail_normal);
         return glm::vec3(o.nose[i] - (d.cushion_width - depth) * o.rail_normal, d.rail_height);
@@ -118,12 +125,12 @@ void add_cushion(std::vector<Vertex>& out, const CushionOutline& o, const TableD
     for (std::size_t i = 0; i + 1 < n; ++i) {
         float next = along + glm::length(o.nose[i + 1] - o.nose[i]);
         for (std::size_t r = 0; r + 1 < std::size(rows); ++r)
-            add_quad(out, at(i, rows[r]), at(i + 1, rows[r]), at(i + 1, rows[r + 1]), at(i, rows[r + 1]),
-                     {along, 0.01f * float(r)}, {next, 0.01f * float(r)}, {next, 0.01f * float(r + 1)},
-                     {along, 0.01f * float(r + 1)});
+            add_quad(out, at(i, rows[r]), at(i + 1, rows[r]), at(i + 1, rows[r + 1]),
+                     at(i, rows[r + 1]), {along, 0.01f * float(r)}, {next, 0.01f * float(r)},
+                     {next, 0.01f * float(r + 1)}, {along, 0.01f * float(r + 1)});
         const Row& top = rows[std::size(rows) - 1];
-        add_quad(out, at(i, top), at(i + 1, top), back(i + 1), back(i), {along, 0.03f}, {next, 0.03f},
-                 {next, 0.08f}, {along, 0.08f});
+        add_quad(out, at(i, top), at(i + 1, top), back(i + 1), back(i), {along, 0.03f},
+                 {next, 0.03f}, {next, 0.08f}, {along, 0.08f});
         along = next;
     }
     // The cut ends behind the jaw facings.
@@ -133,10 +140,14 @@ void add_cushion(std::vector<Vertex>& out, const CushionOutline& o, const TableD
         glm::vec3 b0{b.x, b.y, 0.0f};
         if (i == 0) {
             add_quad(out, b0, f0, f1, b, {0, 0}, {0.05f, 0}, {0.05f, 0.04f}, {0, 0.04f});
-            add_tri(out, {b, glm::normalize(glm::cross(f1 - b, f2 - b)), {0, 0.04f}}, {f1, glm::normalize(glm::cross(f1 - b, f2 - b)), {0.05f, 0.04f}}, {f2, glm::normalize(glm::cross(f1 - b, f2 - b)), {0.05f, 0.05f}});
+            add_tri(out, {b, glm::normalize(glm::cross(f1 - b, f2 - b)), {0, 0.04f}},
+                    {f1, glm::normalize(glm::cross(f1 - b, f2 - b)), {0.05f, 0.04f}},
+                    {f2, glm::normalize(glm::cross(f1 - b, f2 - b)), {0.05f, 0.05f}});
         } else {
             add_quad(out, f0, b0, b, f1, {0.05f, 0}, {0, 0}, {0, 0.04f}, {0.05f, 0.04f});
-            add_tri(out, {f1, glm::normalize(glm::cross(b - f1, f2 - f1)), {0.05f, 0.04f}}, {b, glm::normalize(glm::cross(b - f1, f2 - f1)), {0, 0.04f}}, {f2, glm::normalize(glm::cross(b - f1, f2 - f1)), {0.05f, 0.05f}});
+            add_tri(out, {f1, glm::normalize(glm::cross(b - f1, f2 - f1)), {0.05f, 0.04f}},
+                    {b, glm::normalize(glm::cross(b - f1, f2 - f1)), {0, 0.04f}},
+                    {f2, glm::normalize(glm::cross(b - f1, f2 - f1)), {0.05f, 0.05f}});
         }
     }
 }
@@ -150,12 +161,15 @@ TableDims table_dims(const physics::Table& table) {
     return d;
 }
 
-float tray_length(double ball_radius) { return 15.0f * (2.0f * static_cast<float>(ball_radius) + 0.002f) + 0.01f; }
+float tray_length(double ball_radius) {
+    return 15.0f * (2.0f * static_cast<float>(ball_radius) + 0.002f) + 0.01f;
+}
 
 glm::vec3 tray_slot(const physics::Table& table, double ball_radius, int k) {
     const TableDims d = table_dims(table);
     const float R = static_cast<float>(ball_radius);
-    const float x0 = static_cast<float>(table.length()) / 2 - tray_length(ball_radius) / 2 + 0.005f + R + 0.001f;
+    const float x0 =
+        static_cast<float>(table.length()) / 2 - tray_length(ball_radius) / 2 + 0.005f + R + 0.001f;
     const float y = -(d.cushion_width + d.rail_width) - d.tray_wall - d.tray_width / 2;
     return {x0 + static_cast<float>(k) * (2 * R + 0.002f), y, d.tray_floor + R};
 }
@@ -176,8 +190,9 @@ TableMesh build_table_mesh(const physics::Table& table) {
     const float L = static_cast<float>(table.length()), W = static_cast<float>(table.width());
     const float in = d.cushion_width, out = d.cushion_width + d.rail_width;
     // Cloth: the whole footprint (holes are painted by the cloth shader).
-    add_quad(m.cloth, {-out, -out, 0}, {L + out, -out, 0}, {L + out, W + out, 0}, {-out, W + out, 0},
-             {-out, -out}, {L + out, -out}, {L + out, W + out}, {-out, W + out});
+    add_quad(m.cloth, {-out, -out, 0}, {L + out, -out, 0}, {L + out, W + out, 0},
+             {-out, W + out, 0}, {-out, -out}, {L + out, -out}, {L + out, W + out},
+             {-out, W + out});
     for (const auto& l : table.lines)
         if (l.rail >= 0) add_cushion(m.cushions, outline_of(table, l), d);
 
@@ -199,7 +214,8 @@ TableMesh build_table_mesh(const physics::Table& table) {
         add_quad(m.rails, {inner[s], h}, {inner[e], h}, {b_e, h}, {b_s, h}, uv(inner[s], 0.0f),
                  uv(inner[e], 0.0f), uv(b_e, d.rail_width - bevel), uv(b_s, d.rail_width - bevel));
         const float hb = h - 0.7f * bevel;
-        const glm::vec2 m_s = outer[s] - 0.3f * bevel * (o + ds), m_e = outer[e] - 0.3f * bevel * (o + de);
+        const glm::vec2 m_s = outer[s] - 0.3f * bevel * (o + ds),
+                        m_e = outer[e] - 0.3f * bevel * (o + de);
         add_quad(m.rails, {b_s, h}, {b_e, h}, {m_e, hb}, {m_s, hb}, uv(b_s, 0.13f), uv(b_e, 0.13f),
                  uv(m_e, 0.137f), uv(m_s, 0.137f));
         add_quad(m.rails, {m_s, hb}, {m_e, hb}, {outer[e], h - bevel}, {outer[s], h - bevel},

@@ -4,9 +4,8 @@
 // lines. Frame: the table frame, cloth at z = 0 (unit: m).
 #pragma once
 
-#include <vector>
-
 #include <glm/glm.hpp>
+#include <vector>
 
 #include "physics/table.hpp"
 
@@ -18,7 +17,8 @@ struct TableDims {
     float cushion_width = 0.050f;    ///< nose to the back of the cushion (unit: m)
     float rail_width = 0.140f;       ///< wooden rail top, beyond the cushion (unit: m)
     float rail_height = 0.044f;      ///< rail top above the cloth (unit: m)
-    float apron_depth = 0.30f;       ///< how far the table's wooden sides reach below the cloth (unit: m)
+    float apron_depth =
+        0.30f;  ///< how far the table's wooden sides reach below the cloth (unit: m)
     /// The ball-return tray along the south side, against the apron (y < 0): inner width, floor
     /// height (below the cloth), wall thickness (unit: m).
     float tray_width = 0.064f;
@@ -40,9 +40,9 @@ struct PocketHole {
 std::vector<PocketHole> pocket_holes(const physics::Table& table);
 
 struct Vertex {
-    glm::vec3 pos;     ///< (unit: m)
+    glm::vec3 pos;  ///< (unit: m)
     glm::vec3 normal;
-    glm::vec2 uv;      ///< texture coordinates (unit: m along the surface)
+    glm::vec2 uv;  ///< texture coordinates (unit: m along the surface)
 };
 
 /// Triangle lists, one per material.

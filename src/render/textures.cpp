@@ -21,7 +21,9 @@ std::uint32_t hash(std::uint32_t x, std::uint32_t y, std::uint32_t seed) {
 }
 
 float rand01(int x, int y, std::uint32_t seed) {
-    return static_cast<float>(hash(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), seed) & 0xffffu) / 65535.0f;
+    return static_cast<float>(
+               hash(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), seed) & 0xffffu) /
+           65535.0f;
 }
 
 /// Smooth value noise on a lattice of `cells` cells per period (tileable).
@@ -30,7 +32,8 @@ float value_noise(float u, float v, int cells_u, int cells_v, std::uint32_t seed
     const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
     const float fx = x - static_cast<float>(x0), fy = y - static_cast<float>(y0);
     auto at = [&](int i, int j) {
-        return rand01(((i % cells_u) + cells_u) % cells_u, ((j % cells_v) + cells_v) % cells_v, seed);
+        return rand01(((i % cells_u) + cells_u) % cells_u, ((j % cells_v) + cells_v) % cells_v,
+                      seed);
     };
     const float sx = fx * fx * (3 - 2 * fx), sy = fy * fy * (3 - 2 * fy);
     const float a = at(x0, y0) + (at(x0 + 1, y0) - at(x0, y0)) * sx;
@@ -38,7 +41,9 @@ float value_noise(float u, float v, int cells_u, int cells_v, std::uint32_t seed
     return a + (b - a) * sy;
 }
 
-std::uint8_t to_byte(float v) { return static_cast<std::uint8_t>(std::clamp(v, 0.0f, 255.0f)); }
+std::uint8_t to_byte(float v) {
+    return static_cast<std::uint8_t>(std::clamp(v, 0.0f, 255.0f));
+}
 
 }  // namespace
 
@@ -51,7 +56,8 @@ TextureData make_cloth_texture(int size) {
             // Fibres: short streaks along u (the nap), plus a little weave and mottling.
             const float fibre = value_noise(u, v, size / 8, size, 1) - 0.5f;
             const float grain = rand01(x, y, 2) - 0.5f;
-            const float mottle = value_noise(u, v, 4, 4, 3) + 0.5f * value_noise(u, v, 16, 16, 4) - 0.75f;
+            const float mottle =
+                value_noise(u, v, 4, 4, 3) + 0.5f * value_noise(u, v, 16, 16, 4) - 0.75f;
             const float weave = ((x + y) % 2 == 0 ? 1.0f : -1.0f);
             t.pixels[static_cast<std::size_t>(y) * size + x] =
                 to_byte(128.0f + 34.0f * fibre + 14.0f * grain + 22.0f * mottle + 4.0f * weave);
@@ -60,17 +66,21 @@ TextureData make_cloth_texture(int size) {
 }
 
 TextureData make_wood_texture(int width, int height) {
-    TextureData t{width, height, 3, std::vector<std::uint8_t>(static_cast<std::size_t>(width) * height * 3)};
+    TextureData t{width, height, 3,
+                  std::vector<std::uint8_t>(static_cast<std::size_t>(width) * height * 3)};
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
             const float u = static_cast<float>(x) / static_cast<float>(width);
             const float v = static_cast<float>(y) / static_cast<float>(height);
             // Rings: a distorted distance across the board; long flowing lines along u.
-            const float warp = 1.6f * value_noise(u, v, 6, 2, 11) + 0.5f * value_noise(u, v, 24, 4, 12);
+            const float warp =
+                1.6f * value_noise(u, v, 6, 2, 11) + 0.5f * value_noise(u, v, 24, 4, 12);
             const float rings = 7.0f * v + 0.45f * warp;
             const float ring = std::pow(0.5f + 0.5f * std::sin(rings * 6.2831853f), 3.0f);
             const float fleck = value_noise(u, v, 256, 48, 13) - 0.5f;
-            const float dark = std::clamp(0.35f * ring + 0.2f * fleck + 0.15f + 0.1f * value_noise(u, v, 3, 1, 14), 0.0f, 1.0f);
+            const float dark =
+                std::clamp(0.35f * ring + 0.2f * fleck + 0.15f + 0.1f * value_noise(u, v, 3, 1, 14),
+                           0.0f, 1.0f);
             // Mahogany: from a warm red-brown to a deep brown.
             const float light[3] = {96.0f, 44.0f, 22.0f}, deep[3] = {52.0f, 20.0f, 9.0f};
             for (int c = 0; c < 3; ++c)
@@ -82,17 +92,20 @@ TextureData make_wood_texture(int width, int height) {
 
 TextureData make_number_atlas(const std::string& font_path, int cell) {
     std::ifstream in(font_path, std::ios::binary);
-    const std::vector<unsigned char> font_file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::vector<unsigned char> font_file((std::istreambuf_iterator<char>(in)),
+                                               std::istreambuf_iterator<char>());
     if (font_file.empty())
-        throw std::runtime_error("cannot read the ball-number font " + font_path +
-                                 " (Debian: apt-get install fonts-dejavu-core; or set RenderSettings::number_font)");
+        throw std::runtime_error(
+            "cannot read the ball-number font " + font_path +
+            " (Debian: apt-get install fonts-dejavu-core; or set RenderSettings::number_font)");
     stbtt_fontinfo font;
     const int offset = stbtt_GetFontOffsetForIndex(font_file.data(), 0);
     if (offset < 0 || !stbtt_InitFont(&font, font_file.data(), offset))
         throw std::runtime_error("the ball-number font " + font_path + " is not a TrueType font");
 
     const int size = kNumberCells * cell;
-    TextureData t{size, size, 1, std::vector<std::uint8_t>(static_cast<std::size_t>(size) * size, 0)};
+    TextureData t{size, size, 1,
+                  std::vector<std::uint8_t>(static_cast<std::size_t>(size) * size, 0)};
     // The digits' height: that of "0" in the font, so every number shares one baseline.
     int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
     stbtt_GetCodepointBox(&font, '0', &x0, &y0, &x1, &y1);
@@ -100,7 +113,8 @@ TextureData make_number_atlas(const std::string& font_path, int cell) {
     for (int n = 1; n <= 15; ++n) {
         const std::string text = std::to_string(n);
         const bool two = text.size() > 1;
-        // Single digits 0.62 of the cell tall; pairs a little smaller and condensed, as on real balls.
+        // Single digits 0.62 of the cell tall; pairs a little smaller and condensed, as on real
+        // balls.
         const float sy = (two ? 0.56f : 0.62f) * static_cast<float>(cell) / digit_h;
         float sx = sy;
         // The pen advance of the whole number at scale 1, to centre it (and fit pairs).
@@ -109,35 +123,47 @@ TextureData make_number_atlas(const std::string& font_path, int cell) {
             int adv = 0, lsb = 0;
             stbtt_GetCodepointHMetrics(&font, text[k], &adv, &lsb);
             width += static_cast<float>(adv);
-            if (k + 1 < text.size()) width += static_cast<float>(stbtt_GetCodepointKernAdvance(&font, text[k], text[k + 1]));
+            if (k + 1 < text.size())
+                width +=
+                    static_cast<float>(stbtt_GetCodepointKernAdvance(&font, text[k], text[k + 1]));
         }
         if (two) sx = std::min(sx * 0.86f, 0.80f * static_cast<float>(cell) / width);
-        const int cx = (n % kNumberCells) * cell, cy = (n / kNumberCells) * cell;  // top-left, rows top down
-        const float baseline = static_cast<float>(cy) + 0.5f * static_cast<float>(cell) + 0.5f * digit_h * sy;
+        const int cx = (n % kNumberCells) * cell,
+                  cy = (n / kNumberCells) * cell;  // top-left, rows top down
+        const float baseline =
+            static_cast<float>(cy) + 0.5f * static_cast<float>(cell) + 0.5f * digit_h * sy;
         float pen = static_cast<float>(cx) + 0.5f * static_cast<float>(cell) - 0.5f * width * sx;
         std::vector<unsigned char> glyph;
         for (std::size_t k = 0; k < text.size(); ++k) {
             int gx0 = 0, gy0 = 0, gx1 = 0, gy1 = 0;
             const float shift = pen - std::floor(pen);
-            stbtt_GetCodepointBitmapBoxSubpixel(&font, text[k], sx, sy, shift, 0.0f, &gx0, &gy0, &gx1, &gy1);
+            stbtt_GetCodepointBitmapBoxSubpixel(&font, text[k], sx, sy, shift, 0.0f, &gx0, &gy0,
+                                                &gx1, &gy1);
             const int gw = gx1 - gx0, gh = gy1 - gy0;
             if (gw > 0 && gh > 0) {
                 glyph.assign(static_cast<std::size_t>(gw) * static_cast<std::size_t>(gh), 0);
-                stbtt_MakeCodepointBitmapSubpixel(&font, glyph.data(), gw, gh, gw, sx, sy, shift, 0.0f, text[k]);
+                stbtt_MakeCodepointBitmapSubpixel(&font, glyph.data(), gw, gh, gw, sx, sy, shift,
+                                                  0.0f, text[k]);
                 const int ox = static_cast<int>(std::floor(pen)) + gx0;
                 const int oy = static_cast<int>(std::lround(baseline)) + gy0;
                 for (int y = 0; y < gh; ++y)
                     for (int x = 0; x < gw; ++x) {
                         const int px = ox + x, py = oy + y;
-                        if (px < cx + 1 || px >= cx + cell - 1 || py < cy + 1 || py >= cy + cell - 1) continue;
-                        std::uint8_t& dst = t.pixels[static_cast<std::size_t>(size - 1 - py) * size + px];
+                        if (px < cx + 1 || px >= cx + cell - 1 || py < cy + 1 ||
+                            py >= cy + cell - 1)
+                            continue;
+                        std::uint8_t& dst =
+                            t.pixels[static_cast<std::size_t>(size - 1 - py) * size + px];
                         dst = std::max(dst, glyph[static_cast<std::size_t>(y) * gw + x]);
                     }
             }
             int adv = 0, lsb = 0;
             stbtt_GetCodepointHMetrics(&font, text[k], &adv, &lsb);
             pen += static_cast<float>(adv) * sx;
-            if (k + 1 < text.size()) pen += static_cast<float>(stbtt_GetCodepointKernAdvance(&font, text[k], text[k + 1])) * sx;
+            if (k + 1 < text.size())
+                pen +=
+                    static_cast<float>(stbtt_GetCodepointKernAdvance(&font, text[k], text[k + 1])) *
+                    sx;
         }
         if (n == 6 || n == 9) {
             // The underline that tells 6 from 9 on a turned ball.
@@ -145,7 +171,8 @@ TextureData make_number_atlas(const std::string& font_path, int cell) {
             const int uy0 = static_cast<int>(std::lround(baseline)) + cell * 6 / 100;
             const int uy1 = uy0 + std::max(2, cell * 7 / 100);
             for (int py = uy0; py < uy1 && py < cy + cell - 1; ++py)
-                for (int px = ux0; px < ux1; ++px) t.pixels[static_cast<std::size_t>(size - 1 - py) * size + px] = 255;
+                for (int px = ux0; px < ux1; ++px)
+                    t.pixels[static_cast<std::size_t>(size - 1 - py) * size + px] = 255;
         }
     }
     return t;

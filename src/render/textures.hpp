@@ -21,7 +21,8 @@ TextureData make_cloth_texture(int size = 256);
 TextureData make_wood_texture(int width = 1024, int height = 128);
 
 /// The font the ball numbers are rasterized from (Debian package fonts-dejavu-core).
-inline constexpr const char* kDefaultNumberFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans-Bold.ttf";
+inline constexpr const char* kDefaultNumberFont =
+    "/usr/share/fonts/truetype/dejavu/DejaVuSans-Bold.ttf";
 
 /// The ball numbers' atlas (one channel, ink coverage 0–255): kNumberCells × kNumberCells
 /// square cells of `cell` pixels, cell i (i = 1..15, row-major from the top-left) holds the

@@ -93,9 +93,9 @@ bool breaks_with_one_of(const ai::Position& pos, int level, bool tuned) {
     for (const ai::Candidate& c : ai::break_candidates(pos, tuned)) {
         double heading = std::fmod(c.stroke.heading_deg, 360.0);  // as the planner gives it
         if (heading < 0.0) heading += 360.0;
-        found = found || (c.stroke.speed == p.decision.stroke.speed &&
-                          heading == p.decision.stroke.heading_deg &&
-                          c.cue_pos == p.decision.cue_pos);
+        found =
+            found || (c.stroke.speed == p.decision.stroke.speed &&
+                      heading == p.decision.stroke.heading_deg && c.cue_pos == p.decision.cue_pos);
     }
     return found;
 }

@@ -31,8 +31,8 @@ ai::Position straight_combination() {
 TEST(CombinationAim, FindsTheStraightCombinationAndItIsHarderThanAPot) {
     const ai::Position pos = straight_combination();
     const double R = pos.params.ball_radius;
-    const std::optional<ai::Combination> c = ai::combination_aim(
-        pos.table, R, pos.state.positions.at(0), 2, 9, SW, pos.state.positions);
+    const std::optional<ai::Combination> c =
+        ai::combination_aim(pos.table, R, pos.state.positions.at(0), 2, 9, SW, pos.state.positions);
     ASSERT_TRUE(c.has_value());
     EXPECT_EQ(c->first.ball, 2);
     EXPECT_EQ(c->second.ball, 9);
@@ -44,9 +44,9 @@ TEST(CombinationAim, FindsTheStraightCombinationAndItIsHarderThanAPot) {
     EXPECT_GT(q, 0.3);
     EXPECT_LT(q, 1.0);
     // The 9 potted from the first ball's spot instead (one contact less) is easier.
-    const std::optional<ai::Aim> direct = ai::direct_aim(
-        pos.table, R, pos.state.positions.at(2), 9, SW,
-        {{3, pos.state.positions.at(3)}, {9, pos.state.positions.at(9)}});
+    const std::optional<ai::Aim> direct =
+        ai::direct_aim(pos.table, R, pos.state.positions.at(2), 9, SW,
+                       {{3, pos.state.positions.at(3)}, {9, pos.state.positions.at(9)}});
     ASSERT_TRUE(direct.has_value());
     EXPECT_GT(ai::aim_chance(*direct, R, sigma), q);
 }
@@ -64,8 +64,7 @@ TEST(CombinationAim, RefusesABlockedPathOrASteepCut) {
     beside[2] = {0.42, 0.08};
     EXPECT_FALSE(ai::combination_aim(pos.table, R, cue, 2, 9, SW, beside).has_value());
     // The same ball twice is no combination.
-    EXPECT_FALSE(
-        ai::combination_aim(pos.table, R, cue, 9, 9, SW, pos.state.positions).has_value());
+    EXPECT_FALSE(ai::combination_aim(pos.table, R, cue, 9, 9, SW, pos.state.positions).has_value());
 }
 
 TEST(CombinationCandidates, TheRefinedStrokesPotTheNineWithoutNoise) {

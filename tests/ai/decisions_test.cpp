@@ -56,8 +56,9 @@ TEST(Decisions, PotsAnEasyStraightShotAtZeroNoise) {
 
 TEST(Decisions, CallsTheBallItPots) {
     // 8-ball, solids: the 2 hangs in the SE corner.
-    ai::Position pos = position(Game::eight_ball, {2, 8, 10},
-                                {{0, {1.9, 0.3}}, {2, {2.45, 0.09}}, {8, {0.8, 1.0}}, {10, {1.2, 1.1}}});
+    ai::Position pos =
+        position(Game::eight_ball, {2, 8, 10},
+                 {{0, {1.9, 0.3}}, {2, {2.45, 0.09}}, {8, {0.8, 1.0}}, {10, {1.2, 1.1}}});
     pos.state.group_a = rules::Group::solids;
     const ai::Plan p = ai::plan(pos, {3, 0.0, 2}, 1);
     ASSERT_TRUE(p.decision.call.is_ball());
@@ -87,9 +88,9 @@ TEST(Decisions, PlaysSafeWhenNothingIsOn) {
 }
 
 TEST(Decisions, PlacesTheCueBallInHandLegally) {
-    ai::Position pos = position(Game::nine_ball, {3, 5, 9},
-                                {{3, {1.0, 0.4}}, {5, {2.0, 1.0}}, {9, {2.3, 0.3}}},
-                                rules::CueBall::in_hand);
+    ai::Position pos =
+        position(Game::nine_ball, {3, 5, 9}, {{3, {1.0, 0.4}}, {5, {2.0, 1.0}}, {9, {2.3, 0.3}}},
+                 rules::CueBall::in_hand);
     const ai::Plan p = ai::plan(pos, {4, 1.0, 2}, 5);
     ASSERT_TRUE(p.decision.cue_pos.has_value());
     EXPECT_TRUE(ai::free_spot(pos, *p.decision.cue_pos));
@@ -105,7 +106,8 @@ TEST(Decisions, PlacesTheCueBallInHandLegally) {
 }
 
 TEST(Decisions, AnswersChoicesWithAnOfferedOption) {
-    ai::Position pos = position(Game::nine_ball, {1, 9}, {{0, {0.5, 0.5}}, {1, {2.3, 1.2}}, {9, {1.0, 0.6}}});
+    ai::Position pos =
+        position(Game::nine_ball, {1, 9}, {{0, {0.5, 0.5}}, {1, {2.3, 1.2}}, {9, {1.0, 0.6}}});
     pos.state.shot = rules::Shot::after_push_out;
     pos.choice = rules::Choice{rules::Player::B,
                                {rules::ChoiceOption::shoot, rules::ChoiceOption::pass_back}};
@@ -135,8 +137,12 @@ TEST(Decisions, PushesOutOnlyWhereAllowedAndLegally) {
 
 TEST(Decisions, SameSeedSameDecisionWhateverTheThreads) {
     ai::Position pos = position(Game::eight_ball, {1, 4, 8, 11, 14},
-                                {{0, {1.0, 0.6}}, {1, {1.7, 0.9}}, {4, {2.2, 0.3}},
-                                 {8, {0.6, 1.0}}, {11, {1.5, 0.2}}, {14, {2.0, 0.7}}});
+                                {{0, {1.0, 0.6}},
+                                 {1, {1.7, 0.9}},
+                                 {4, {2.2, 0.3}},
+                                 {8, {0.6, 1.0}},
+                                 {11, {1.5, 0.2}},
+                                 {14, {2.0, 0.7}}});
     for (int level : {1, 5}) {
         const ai::Plan a = ai::plan(pos, {level, 1.0, 2}, 42);
         const ai::Plan b = ai::plan(pos, {level, 1.0, 2}, 42);

@@ -15,7 +15,9 @@
 
 namespace {
 
-double normal_cdf(double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); }
+double normal_cdf(double z) {
+    return 0.5 * std::erfc(-z / std::sqrt(2.0));
+}
 
 // The largest gap between the empirical CDF of `xs` and the normal's (Kolmogorov's statistic).
 double ks_distance(std::vector<double> xs) {
@@ -39,7 +41,7 @@ std::vector<double> component(const std::vector<ai::NoiseDraw>& draws, std::size
 TEST(RadicalInverse, MirrorsTheDigits) {
     EXPECT_EQ(ai::radical_inverse(0, 2), 0.0);
     EXPECT_EQ(ai::radical_inverse(1, 2), 0.5);
-    EXPECT_EQ(ai::radical_inverse(6, 2), 0.375);  // 110 → 0.011
+    EXPECT_EQ(ai::radical_inverse(6, 2), 0.375);               // 110 → 0.011
     EXPECT_NEAR(ai::radical_inverse(5, 3), 7.0 / 9.0, 1e-15);  // 12 → 0.21
 }
 
@@ -53,7 +55,8 @@ TEST(NormalQuantile, InvertsTheCdf) {
 }
 
 TEST(NoiseDraws, TheSameSeedGivesTheSameDrawsAndAnotherOthers) {
-    const auto a = ai::noise_draws(11, 64), b = ai::noise_draws(11, 64), c = ai::noise_draws(12, 64);
+    const auto a = ai::noise_draws(11, 64), b = ai::noise_draws(11, 64),
+               c = ai::noise_draws(12, 64);
     ASSERT_EQ(a.size(), 64u);
     bool differs = false;
     for (std::size_t i = 0; i < a.size(); ++i) {
@@ -69,9 +72,9 @@ TEST(NoiseDraws, TheSameSeedGivesTheSameDrawsAndAnotherOthers) {
 
 TEST(NoiseDraws, EveryComponentIsAStandardNormal) {
     const auto draws = ai::noise_draws(5, 1024);
-    for (double ai::NoiseDraw::*f : {&ai::NoiseDraw::heading, &ai::NoiseDraw::elevation,
-                                     &ai::NoiseDraw::speed, &ai::NoiseDraw::side,
-                                     &ai::NoiseDraw::top}) {
+    for (double ai::NoiseDraw::*f :
+         {&ai::NoiseDraw::heading, &ai::NoiseDraw::elevation, &ai::NoiseDraw::speed,
+          &ai::NoiseDraw::side, &ai::NoiseDraw::top}) {
         const std::vector<double> xs = component(draws, draws.size(), f);
         double mean = 0.0, var = 0.0;
         for (double x : xs) mean += x / 1024.0;
@@ -98,8 +101,11 @@ TEST(NoiseDraws, TheFirstFewCoverTheDistributionEvenly) {
     // below digit_sum(k, b)/k whatever the seed's shift: 1/16, 2/40 and 2/80 for the heading
     // (base 2), against 0.22, 0.14 and 0.10.
     const std::vector<std::pair<double ai::NoiseDraw::*, std::size_t>> bases{
-        {&ai::NoiseDraw::heading, 2}, {&ai::NoiseDraw::speed, 3}, {&ai::NoiseDraw::side, 5},
-        {&ai::NoiseDraw::top, 7}, {&ai::NoiseDraw::elevation, 11}};
+        {&ai::NoiseDraw::heading, 2},
+        {&ai::NoiseDraw::speed, 3},
+        {&ai::NoiseDraw::side, 5},
+        {&ai::NoiseDraw::top, 7},
+        {&ai::NoiseDraw::elevation, 11}};
     for (std::uint64_t seed = 1; seed <= 50; ++seed) {
         const auto draws = ai::noise_draws(seed, 80);
         for (std::size_t k : {16u, 40u, 80u})

@@ -27,7 +27,7 @@ ai::Position spread(Game game, const std::set<int>& on) {
 TEST(NearRackEnd, EightBallCountsTheShootersGroupAndTheEight) {
     ai::Position pos = spread(Game::eight_ball, {1, 2, 3, 4, 8, 9, 10});
     EXPECT_FALSE(ai::near_rack_end(pos.ruleset, pos.state));  // an open table
-    pos.state.group_a = rules::Group::stripes;                 // A: the 9, the 10 and the 8
+    pos.state.group_a = rules::Group::stripes;                // A: the 9, the 10 and the 8
     EXPECT_TRUE(ai::near_rack_end(pos.ruleset, pos.state));
     pos.state.shooter = rules::Player::B;  // B: four solids and the 8
     EXPECT_FALSE(ai::near_rack_end(pos.ruleset, pos.state));

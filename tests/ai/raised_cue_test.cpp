@@ -27,8 +27,8 @@ ai::Position two_balls() {
 ai::Aim straightest_pot(const ai::Position& pos) {
     std::optional<ai::Aim> best;
     for (int pocket = 0; pocket < 6; ++pocket) {
-        const std::optional<ai::Aim> a = ai::direct_aim(pos.table, pos.params.ball_radius, kCue, 1,
-                                                        pocket, pos.state.positions);
+        const std::optional<ai::Aim> a =
+            ai::direct_aim(pos.table, pos.params.ball_radius, kCue, 1, pocket, pos.state.positions);
         if (a && (!best || a->cut_deg < best->cut_deg)) best = a;
     }
     EXPECT_TRUE(best.has_value());

@@ -24,9 +24,12 @@ constexpr double gap = 2.0 * 0.028575 + 1e-4;  // two ball radii and a tenth of 
 ai::Position boxed_nine(bool with_ten) {
     const Vec2 nine{1.27, 0.635};
     std::set<int> on{1, 2, 3, 4, 8, 9};
-    std::map<int, Vec2> at{{0, {0.4, 0.3}},           {1, nine + Vec2{gap, 0}},
-                           {2, nine + Vec2{-gap, 0}}, {3, nine + Vec2{0, gap}},
-                           {4, nine + Vec2{0, -gap}}, {8, {2.2, 1.0}},
+    std::map<int, Vec2> at{{0, {0.4, 0.3}},
+                           {1, nine + Vec2{gap, 0}},
+                           {2, nine + Vec2{-gap, 0}},
+                           {3, nine + Vec2{0, gap}},
+                           {4, nine + Vec2{0, -gap}},
+                           {8, {2.2, 1.0}},
                            {9, nine}};
     if (with_ten) {
         on.insert(10);
@@ -45,14 +48,13 @@ TEST(BallsToClear, AreTheShootersGroupAndTheEightOrEveryBallIn9Ball) {
     pos.state.group_a.reset();  // an open table: no group yet
     EXPECT_TRUE(ai::balls_to_clear(pos.ruleset, pos.state).empty());
     pos.ruleset.game = Game::nine_ball;
-    EXPECT_EQ(ai::balls_to_clear(pos.ruleset, pos.state),
-              (std::vector<int>{1, 2, 3, 4, 8, 9, 10}));
+    EXPECT_EQ(ai::balls_to_clear(pos.ruleset, pos.state), (std::vector<int>{1, 2, 3, 4, 8, 9, 10}));
 }
 
 TEST(StuckBalls, CountsTheBallsWithNoPathToAnyPocket) {
     const ai::Position pos = boxed_nine(true);
     EXPECT_EQ(ai::stuck_balls(pos, pos.state), 1);  // the 9; the 8 and the 10 are free
-    ai::Position freed = pos;  // the four solids moved to the head rail
+    ai::Position freed = pos;                       // the four solids moved to the head rail
     for (int ball = 1; ball <= 4; ++ball) freed.state.positions[ball] = {0.2 * ball, 1.2};
     EXPECT_EQ(ai::stuck_balls(freed, freed.state), 0);
 }

@@ -7,7 +7,8 @@
 
 namespace app_test {
 
-inline game::Session new_session(rules::Game game = rules::Game::eight_ball, std::uint64_t seed = 5) {
+inline game::Session new_session(rules::Game game = rules::Game::eight_ball,
+                                 std::uint64_t seed = 5) {
     game::Config c;
     c.game = game;
     c.seed = seed;

@@ -97,7 +97,8 @@ TEST(Controller, SkipJumpsToTheEndAndReplayStartsOver) {
         EXPECT_EQ(after[i].pos.y, again[i].pos.y);
     }
     // A replay ends with the balls turned as they were after the shot.
-    for (int id = 0; id <= 15; ++id) EXPECT_EQ(c.orientations().of(id), turned.of(id)) << "ball " << id;
+    for (int id = 0; id <= 15; ++id)
+        EXPECT_EQ(c.orientations().of(id), turned.of(id)) << "ball " << id;
 }
 
 TEST(Controller, BallInHandRefusesAnIllegalSpotWithTheReason) {
@@ -116,7 +117,8 @@ TEST(Controller, TheAimGuidePotsAStraightShotIntoThePocketItNames) {
     const double R = params.ball_radius;
     const physics::Pocket& ne = table.pockets[static_cast<std::size_t>(physics::PocketId::NE)];
     // The object ball 0.5 m from the NE pocket, the cue ball 0.8 m behind it on the same line.
-    const physics::Vec2 dir = (1.0 / physics::norm(ne.centre - physics::Vec2{1.6, 0.5})) * (ne.centre - physics::Vec2{1.6, 0.5});
+    const physics::Vec2 dir = (1.0 / physics::norm(ne.centre - physics::Vec2{1.6, 0.5})) *
+                              (ne.centre - physics::Vec2{1.6, 0.5});
     const physics::Vec2 object = ne.centre - 0.5 * dir;
     const physics::Vec2 cue = object - 0.8 * dir;
     physics::BallState balls[2];
@@ -161,7 +163,8 @@ TEST(Controller, ClickingABallAndAPocketCallsThem) {
     c.click_table(st.positions.at(ball));
     ASSERT_TRUE(c.call_is_manual());
     EXPECT_EQ(c.call().ball, ball);
-    const physics::Pocket& ne = c.session().table().pockets[static_cast<std::size_t>(physics::PocketId::NE)];
+    const physics::Pocket& ne =
+        c.session().table().pockets[static_cast<std::size_t>(physics::PocketId::NE)];
     c.click_table(ne.centre);
     EXPECT_EQ(c.call(), rules::Call::ball_in(ball, static_cast<int>(physics::PocketId::NE)));
     c.click_table(st.positions.at(8));  // the 8 is not callable on an open table

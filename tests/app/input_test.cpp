@@ -14,7 +14,8 @@ struct Fixture {
     app::CameraRig rig;
     render::Camera camera = render::overhead_camera(c.session().table(), 980.0f / 720.0f);
     app::TableInput input{c, rig, [this](double x, double y) {
-                              return app::table_point(camera, 980, 720, x, y, c.session().config().params.ball_radius);
+                              return app::table_point(camera, 980, 720, x, y,
+                                                      c.session().config().params.ball_radius);
                           }};
 };
 
@@ -49,7 +50,8 @@ TEST(Input, DraggingTheCueBallInHandMovesIt) {
     double bx = 0, by = 0, best = 1e9;
     for (int x = 0; x < 980; x += 2)
         for (int y = 0; y < 720; y += 2) {
-            const auto p = app::table_point(f.camera, 980, 720, x, y, f.c.session().config().params.ball_radius);
+            const auto p = app::table_point(f.camera, 980, 720, x, y,
+                                            f.c.session().config().params.ball_radius);
             if (p && physics::norm(*p - cue) < best) {
                 best = physics::norm(*p - cue);
                 bx = x;

@@ -78,9 +78,12 @@ TEST(Settings, ErrorsNameTheField) {
     const std::string head = "{\"format\": \"coolaaber-settings\", \"version\": 1, ";
     EXPECT_NE(error(head + "\"colour\": 1}").find("colour"), std::string::npos);
     EXPECT_NE(error(head + "\"view\": \"side\"}").find("settings.view"), std::string::npos);
-    EXPECT_NE(error(head + "\"players\": [\"human\", \"ai:9\"]}").find("settings.players[1]"), std::string::npos);
-    EXPECT_NE(error(head + "\"window\": {\"width\": 10}}").find("settings.window.width"), std::string::npos);
-    EXPECT_NE(error("{\"format\": \"pool\", \"version\": 1}").find("not a Coolaaber settings file"), std::string::npos);
+    EXPECT_NE(error(head + "\"players\": [\"human\", \"ai:9\"]}").find("settings.players[1]"),
+              std::string::npos);
+    EXPECT_NE(error(head + "\"window\": {\"width\": 10}}").find("settings.window.width"),
+              std::string::npos);
+    EXPECT_NE(error("{\"format\": \"pool\", \"version\": 1}").find("not a Coolaaber settings file"),
+              std::string::npos);
     // Fields left out keep their defaults.
     EXPECT_EQ(app::settings_from_json(head + "\"sound\": false}").power, app::Settings{}.power);
 }

@@ -1,9 +1,9 @@
 // Bad input to `simulate` and bad command lines: exit status 2, nothing on stdout, and exactly
 // one line on stderr, "error: <json path>: <message>" (cli-contract.md).
+#include <gtest/gtest.h>
+
 #include <string>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "cli_process.hpp"
 

@@ -1,5 +1,6 @@
 // `bench`: one entry per standard scene with timings, events and runs.
 #include <gtest/gtest.h>
+
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"

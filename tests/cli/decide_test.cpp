@@ -139,7 +139,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"noise_negative", with(R"("noise": -1)"), "noise", "out of range"},
         BadCase{"seed_negative", with(R"("seed": -1)"), "seed", "whole number"},
         BadCase{"seed_fraction", with(R"("seed": 1.5)"), "seed", "whole number"},
-        BadCase{"unbounded_table", with(R"("table": "unbounded")"), "table", "cushions and pockets"},
+        BadCase{"unbounded_table", with(R"("table": "unbounded")"), "table",
+                "cushions and pockets"},
         BadCase{"choice_by", with(R"("choice": {"by": "C", "options": ["shoot"]})"), "choice.by",
                 "unknown player"},
         BadCase{"choice_option", with(R"("choice": {"by": "A", "options": ["shoot", "fold"]})"),
@@ -170,9 +171,9 @@ TEST(MatchWithAi, AiAgainstRandomIsReproducible) {
     ASSERT_EQ(a.status, 0) << a.err;
     json ja = json::parse(a.out), jb = json::parse(b.out);
     EXPECT_EQ(ja["players"], json::array({"ai:1", "random"}));
-    EXPECT_EQ(ja["wins"]["ai:1"].get<int>() + ja["wins"]["random"].get<int>() +
-                  ja["capped"].get<int>(),
-              2);
+    EXPECT_EQ(
+        ja["wins"]["ai:1"].get<int>() + ja["wins"]["random"].get<int>() + ja["capped"].get<int>(),
+        2);
     ASSERT_TRUE(ja["decision_seconds"].contains("ai:1"));
     EXPECT_GT(ja["decision_seconds"]["ai:1"]["median"].get<double>(), 0.0);
     for (json* j : {&ja, &jb}) {
@@ -187,7 +188,8 @@ TEST(MatchWithAi, DuplicateSwapsTheSides) {
         cli_test::run_cli("match --game 8ball --players ai:2,ai:1 --games 2 --seed 9 --duplicate");
     ASSERT_EQ(r.status, 0) << r.err;
     const json j = json::parse(r.out);
-    EXPECT_EQ(j["wins"]["ai:2"].get<int>() + j["wins"]["ai:1"].get<int>() + j["capped"].get<int>(), 2);
+    EXPECT_EQ(j["wins"]["ai:2"].get<int>() + j["wins"]["ai:1"].get<int>() + j["capped"].get<int>(),
+              2);
 }
 
 }  // namespace

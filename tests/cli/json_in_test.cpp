@@ -1,8 +1,10 @@
 // The JSON input layer: paths in error messages, duplicate fields, numbers.
+#include "cli/json_in.hpp"
+
 #include <gtest/gtest.h>
+
 #include <nlohmann/json.hpp>
 
-#include "cli/json_in.hpp"
 #include "cli/json_out.hpp"
 
 namespace {

@@ -1,13 +1,13 @@
 // `simulate` on valid documents: the output's shape, samples, truncation, determinism, and
 // number formatting (cli-contract.md).
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <regex>
 #include <string>
 #include <vector>
-
-#include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
 #include "cli/json_in.hpp"

@@ -185,12 +185,12 @@ TEST(Session, EightOnTheBreakOffersSpotOrRebreakToTheBreaker) {
     ASSERT_LT(cue.x, L / 4.0);
     s.place_cue_ball(cue);
     const double at = heading(cue, eight);
-    std::optional<physics::Stroke> k =
-        find_stroke(s, fan(at, {0.0, 0.5, -0.5, 1.0, -1.0, 1.5, -1.5}, {2.0, 3.0, 1.5}, {0.0, -0.3}),
-                    [](const ShotRecord& r) {
-                        return pocket_of(r, 8) == pocket(PocketId::N) && !down(r, 0) &&
-                               r.summary.first_contact == 8;
-                    });
+    std::optional<physics::Stroke> k = find_stroke(
+        s, fan(at, {0.0, 0.5, -0.5, 1.0, -1.0, 1.5, -1.5}, {2.0, 3.0, 1.5}, {0.0, -0.3}),
+        [](const ShotRecord& r) {
+            return pocket_of(r, 8) == pocket(PocketId::N) && !down(r, 0) &&
+                   r.summary.first_contact == 8;
+        });
     ASSERT_TRUE(k) << "no stroke pots the 8 in the N pocket";
     const ShotRecord& r = s.play(*k);
     // A legal break (a ball was pocketed), no foul, and the breaker's choice.
@@ -199,8 +199,8 @@ TEST(Session, EightOnTheBreakOffersSpotOrRebreakToTheBreaker) {
     EXPECT_FALSE(r.verdict.game_over);
     ASSERT_EQ(s.phase(), Phase::choose);
     EXPECT_EQ(s.to_act(), A);
-    EXPECT_EQ(s.choice()->options,
-              (std::vector{rules::ChoiceOption::spot_8_and_continue, rules::ChoiceOption::rebreak}));
+    EXPECT_EQ(s.choice()->options, (std::vector{rules::ChoiceOption::spot_8_and_continue,
+                                                rules::ChoiceOption::rebreak}));
     const Session pending = s;
 
     // Spot the 8 and go on: the 8 is back on the foot spot, A shoots from where the cue ball

@@ -76,8 +76,8 @@ void soak(rules::Game type) {
                 if (now.phase() == Phase::choose) expect_round_trip(now, g);
             });
         // Every game ends (the issue): with a winner, never at the shot cap.
-        ASSERT_TRUE(report.winner) << "game " << g << " did not end: capped after " << report.shots
-                                   << " shots";
+        ASSERT_TRUE(report.winner)
+            << "game " << g << " did not end: capped after " << report.shots << " shots";
         EXPECT_EQ(report.winner.has_value(), s.phase() == Phase::game_over);
         EXPECT_LE(report.shots, PlayLimits{}.max_shots);
         expect_consistent(s);

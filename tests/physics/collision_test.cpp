@@ -160,20 +160,20 @@ TEST(BallBall, RollingCueBallThirtyDegreeRule) {
                 ASSERT_GT(roll->time, c.e->time);
                 const BallState s = after(*roll, 0);
                 EXPECT_VEC_NEAR(s.vel, v_final, kRoot * vc);
-                EXPECT_REL(roll->time - c.e->time, 2.0 * norm(u1) / (7.0 * p.mu_slide * kG),
-                           kRoot);
+                EXPECT_REL(roll->time - c.e->time, 2.0 * norm(u1) / (7.0 * p.mu_slide * kG), kRoot);
                 const double deflection = angle_deg({1, 0}, s.vel);
                 // The cue ball goes to the side opposite the object ball.
                 EXPECT_LT(deflection * cut, 0.0);
                 EXPECT_GE(std::fabs(deflection), 28.0);
                 EXPECT_LE(std::fabs(deflection), 34.0);
                 if (e == 1.0) {
-                    EXPECT_NEAR(std::fabs(deflection), std::atan(5.0 * std::sqrt(3.0) / 13.0) / kDeg,
-                                1e-8);
+                    EXPECT_NEAR(std::fabs(deflection),
+                                std::atan(5.0 * std::sqrt(3.0) / 13.0) / kDeg, 1e-8);
                 }
                 if (vc == 2.0 && cut > 0)
-                    std::printf("[ info     ] 30-degree rule, e = %.2f: cue ball deflected %.3f deg\n",
-                                e, std::fabs(deflection));
+                    std::printf(
+                        "[ info     ] 30-degree rule, e = %.2f: cue ball deflected %.3f deg\n", e,
+                        std::fabs(deflection));
             }
         }
     }
@@ -202,9 +202,9 @@ TEST(BallBall, HeadOnStunFollowDraw) {
     const double D = 0.5, vc = 1.5;
     for (BallBallModel model : {BallBallModel::frictionless, BallBallModel::frictional}) {
         for (Cue kind : {Cue::stun, Cue::follow, Cue::draw}) {
-            SCOPED_TRACE(testing::Message() << (model == BallBallModel::frictional ? "frictional "
-                                                                                   : "frictionless ")
-                                            << static_cast<int>(kind));
+            SCOPED_TRACE(testing::Message()
+                         << (model == BallBallModel::frictional ? "frictional " : "frictionless ")
+                         << static_cast<int>(kind));
             const Arrival arr = kind == Cue::follow ? rolling_arrival(kP, D, vc)
                                 : kind == Cue::stun ? sliding_arrival(kP, D, vc, 0.0)
                                                     : sliding_arrival(kP, D, vc, -2.0 * vc / kR);
@@ -222,9 +222,16 @@ TEST(BallBall, HeadOnStunFollowDraw) {
             const std::vector<BallState> rest = shot.final_states();
             const double moved = rest[0].pos.x - c.a1.pos.x;
             switch (kind) {
-                case Cue::stun: EXPECT_GT(moved, 0.0); EXPECT_LT(moved, 0.01); break;  // stops
-                case Cue::follow: EXPECT_GT(moved, 0.1); break;  // goes on
-                case Cue::draw: EXPECT_LT(moved, -0.1); break;   // comes back
+                case Cue::stun:
+                    EXPECT_GT(moved, 0.0);
+                    EXPECT_LT(moved, 0.01);
+                    break;  // stops
+                case Cue::follow:
+                    EXPECT_GT(moved, 0.1);
+                    break;  // goes on
+                case Cue::draw:
+                    EXPECT_LT(moved, -0.1);
+                    break;  // comes back
             }
             if (model == BallBallModel::frictionless) {
                 // Frictionless: the spin is untouched, and the closed form holds exactly.
@@ -344,7 +351,9 @@ TEST(BallBall, MomentumConservedAtAPushingContact) {
 // ---- throw (frictional model) ----
 
 /// Throw of the object ball: its direction's angle from the line of centres (unit: deg).
-double throw_deg(const Contact& c) { return angle_deg(c.n, c.b1.vel); }
+double throw_deg(const Contact& c) {
+    return angle_deg(c.n, c.b1.vel);
+}
 
 // Cut-induced throw, stun cue ball: the contact slip is the cue ball's tangential velocity
 // v·sin φ; the friction impulse min(μ·J_n, m·v·sin φ/7) with J_n = (1 + e)/2·m·v·cos φ sends the
@@ -377,8 +386,9 @@ TEST(BallBall, CutInducedThrow) {
             EXPECT_VEC_NEAR(c.a1.vel + c.b1.vel, c.a0.vel, kExact * vc);
         }
     }
-    std::printf("[ info     ] cut-induced throw, half-ball stun: %.3f deg at 1 m/s, %.3f deg at 3 m/s\n",
-                half_ball_slow, half_ball_fast);
+    std::printf(
+        "[ info     ] cut-induced throw, half-ball stun: %.3f deg at 1 m/s, %.3f deg at 3 m/s\n",
+        half_ball_slow, half_ball_fast);
     EXPECT_GE(half_ball_slow, 1.0);
     EXPECT_LE(half_ball_slow, 5.0);
     EXPECT_LT(half_ball_fast, half_ball_slow);  // μ(v) falls with the slip speed
@@ -404,7 +414,8 @@ TEST(BallBall, CutInducedThrowRollingCueBallIsSmaller) {
             const double v = norm(c.a0.vel), phi = std::fabs(cut) * kDeg;
             const double mu = 0.00995 + 0.108 * std::exp(-1.088 * v);
             const double expect =
-                std::atan(std::sin(phi) * std::min(mu, 2.0 / (7.0 * (1.0 + kP.e_ball) * std::cos(phi)))) /
+                std::atan(std::sin(phi) *
+                          std::min(mu, 2.0 / (7.0 * (1.0 + kP.e_ball) * std::cos(phi)))) /
                 kDeg;
             const double th = throw_deg(c);
             EXPECT_LT(th * cut, 0.0);
@@ -439,7 +450,7 @@ TEST(BallBall, SpinInducedThrow) {
             const double th = throw_deg(c);
             EXPECT_GT(th * wz, 0.0);  // right english (wz > 0): thrown left (+y)
             EXPECT_REL(std::fabs(th), expect, kRoot);
-            EXPECT_LT(c.b1.spin.z * wz, 0.0);                      // opposite english, geared
+            EXPECT_LT(c.b1.spin.z * wz, 0.0);                           // opposite english, geared
             EXPECT_LT(std::fabs(c.a1.spin.z), std::fabs(c.a0.spin.z));  // cue ball loses some
         }
     }
@@ -447,4 +458,3 @@ TEST(BallBall, SpinInducedThrow) {
 
 }  // namespace
 }  // namespace physics::ptest
-

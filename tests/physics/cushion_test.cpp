@@ -24,12 +24,14 @@ TEST(Cushion, SimpleElasticBounceMirrorsTheVelocity) {
     const SimOptions o = options(BallBallModel::frictional, CushionModel::simple);
     for (double incidence : {0.0, 20.0, 45.0, 70.0, -60.0}) {  // from the rail's normal
         for (bool rolling : {true, false}) {
-            SCOPED_TRACE(testing::Message() << "incidence " << incidence << (rolling ? " rolling" : " stun"));
+            SCOPED_TRACE(testing::Message()
+                         << "incidence " << incidence << (rolling ? " rolling" : " stun"));
             // Toward the south rail (normal +y), from the middle of the table.
             const Vec2 dir{std::sin(incidence * kDeg), -std::cos(incidence * kDeg)};
             const Vec2 v = 1.8 * dir;
             const Vec2 r0{0.8, 0.35};
-            const BallState b = make_ball(0, r0, v, rolling ? rolling_spin(p, v, 12.0) : Vec3{0, 0, 12.0});
+            const BallState b =
+                make_ball(0, r0, v, rolling ? rolling_spin(p, v, 12.0) : Vec3{0, 0, 12.0});
             const Shot shot = run(table, p, {b}, nullptr, o);
             const Event* e = first_event(shot, EventType::cushion);
             ASSERT_NE(e, nullptr);
@@ -84,8 +86,9 @@ TEST(Cushion, Han2005RollingBallHeadOn) {
             EXPECT_REL(out.vel.x, rebound, kRoot);
             EXPECT_LT(kinetic(p, out), kinetic(p, in));
             if (e_c == 0.85 && V == 1.0)
-                std::printf("[ info     ] han2005, rolling head-on at 1 m/s, e 0.85: rebound %.4f m/s\n",
-                            out.vel.x);
+                std::printf(
+                    "[ info     ] han2005, rolling head-on at 1 m/s, e 0.85: rebound %.4f m/s\n",
+                    out.vel.x);
         }
     }
 }
@@ -111,11 +114,13 @@ TEST(Cushion, RunningEnglishWidensTheRebound) {
     const double none = rebound_deg(0.0, CushionModel::han2005);
     const double running = rebound_deg(-40.0, CushionModel::han2005);
     const double reverse = rebound_deg(40.0, CushionModel::han2005);
-    std::printf("[ info     ] han2005 rebound at 45 deg in: %.2f deg plain, %.2f running, %.2f reverse\n",
-                none, running, reverse);
+    std::printf(
+        "[ info     ] han2005 rebound at 45 deg in: %.2f deg plain, %.2f running, %.2f reverse\n",
+        none, running, reverse);
     EXPECT_GT(running, none);
     EXPECT_LT(reverse, none);
-    EXPECT_NEAR(rebound_deg(-40.0, CushionModel::simple), rebound_deg(40.0, CushionModel::simple), 1e-9);
+    EXPECT_NEAR(rebound_deg(-40.0, CushionModel::simple), rebound_deg(40.0, CushionModel::simple),
+                1e-9);
 }
 
 /// A random ball somewhere on the table, moving with random spin.
@@ -125,7 +130,8 @@ BallState random_ball(const Table& t, SplitMix64& rng, int id = 0) {
     const double speed = 0.2 + 5.0 * rng.uniform();
     const Vec2 v = speed * from_angle(360.0 * rng.uniform());
     const double s = 1.5 * speed / kR;
-    const Vec3 w{s * (2 * rng.uniform() - 1), s * (2 * rng.uniform() - 1), 60.0 * (2 * rng.uniform() - 1)};
+    const Vec3 w{s * (2 * rng.uniform() - 1), s * (2 * rng.uniform() - 1),
+                 60.0 * (2 * rng.uniform() - 1)};
     return make_ball(id, pos, v, w);
 }
 
@@ -140,10 +146,12 @@ TEST(Cushion, NoEnergyGainedAtABounce) {
                     Params p;
                     p.e_cushion = e_c;
                     p.mu_cushion = mu_c;
-                    SplitMix64 rng(static_cast<std::uint64_t>(1000 * e_c + 10 * mu_c + (pockets ? 7 : 0)));
+                    SplitMix64 rng(
+                        static_cast<std::uint64_t>(1000 * e_c + 10 * mu_c + (pockets ? 7 : 0)));
                     for (int k = 0; k < 40; ++k) {
                         const BallState b = random_ball(table, rng);
-                        const Shot shot = run(table, p, {b}, nullptr, options(BallBallModel::frictional, model));
+                        const Shot shot =
+                            run(table, p, {b}, nullptr, options(BallBallModel::frictional, model));
                         ASSERT_FALSE(shot.truncated());
                         for (const Event* e : events_of(shot, EventType::cushion)) {
                             const BallState in = before(shot, 0, e->time), out = after(*e, 0);
@@ -164,18 +172,26 @@ TEST(Cushion, NoEnergyGainedAtABounce) {
 // the mirror image of its events. Under y → W − y: v_y → −v_y, and ω (a pseudovector) →
 // (−ω_x, ω_y, −ω_z); rails SW-S ↔ NW-N, S-SE ↔ N-NE; pockets SW ↔ NW, S ↔ N, SE ↔ NE.
 BallState mirror(const BallState& b, double W) {
-    return make_ball(b.id, {b.pos.x, W - b.pos.y}, {b.vel.x, -b.vel.y}, {-b.spin.x, b.spin.y, -b.spin.z});
+    return make_ball(b.id, {b.pos.x, W - b.pos.y}, {b.vel.x, -b.vel.y},
+                     {-b.spin.x, b.spin.y, -b.spin.z});
 }
 int mirror_rail(int r) {
     switch (static_cast<RailId>(r)) {
-        case RailId::SW_S: return static_cast<int>(RailId::NW_N);
-        case RailId::NW_N: return static_cast<int>(RailId::SW_S);
-        case RailId::S_SE: return static_cast<int>(RailId::N_NE);
-        case RailId::N_NE: return static_cast<int>(RailId::S_SE);
-        default: return r;
+        case RailId::SW_S:
+            return static_cast<int>(RailId::NW_N);
+        case RailId::NW_N:
+            return static_cast<int>(RailId::SW_S);
+        case RailId::S_SE:
+            return static_cast<int>(RailId::N_NE);
+        case RailId::N_NE:
+            return static_cast<int>(RailId::S_SE);
+        default:
+            return r;
     }
 }
-int mirror_pocket(int pk) { return pk < 0 ? pk : (pk + 3) % 6; }
+int mirror_pocket(int pk) {
+    return pk < 0 ? pk : (pk + 3) % 6;
+}
 
 void expect_mirrored(const Shot& a, const Shot& b, double W) {
     ASSERT_EQ(a.events().size(), b.events().size());
@@ -244,10 +260,10 @@ TEST(Cushion, BallAlongARailTouchingItHasNoCushionEvents) {
     struct Case {
         Vec2 pos, vel;
     };
-    for (const Case& c : {Case{{0.5, kR}, {0.5, 0}},           // along SW-S and on past S-SE
-                          Case{{2.0, W - kR}, {-0.5, 0}},      // along N-NE and NW-N
-                          Case{{kR, 0.2}, {0, 0.4}},           // along W
-                          Case{{L - kR, 1.0}, {0, -0.4}}}) {   // along E
+    for (const Case& c : {Case{{0.5, kR}, {0.5, 0}},          // along SW-S and on past S-SE
+                          Case{{2.0, W - kR}, {-0.5, 0}},     // along N-NE and NW-N
+                          Case{{kR, 0.2}, {0, 0.4}},          // along W
+                          Case{{L - kR, 1.0}, {0, -0.4}}}) {  // along E
         for (bool rolling : {true, false}) {
             SCOPED_TRACE(testing::Message() << "at (" << c.pos.x << ", " << c.pos.y << ")"
                                             << (rolling ? " rolling" : " sliding"));
@@ -274,19 +290,22 @@ TEST(Cushion, BallHittingAJawNoseFarOffAxisStaysOut) {
     int tested = 0;
     for (const JawNose& nose : table.noses) {
         // The side pockets' noses: S (1) and N (4). Come from over the mouth at 45° to the axis.
-        if (nose.pocket != static_cast<int>(PocketId::S) && nose.pocket != static_cast<int>(PocketId::N))
+        if (nose.pocket != static_cast<int>(PocketId::S) &&
+            nose.pocket != static_cast<int>(PocketId::N))
             continue;
         const double to_mouth = nose.centre.x > L / 2 ? -1.0 : 1.0;  // toward the mouth's middle
         const double into = nose.pocket == static_cast<int>(PocketId::S) ? -1.0 : 1.0;
-        const Vec2 d = unit({-to_mouth, into});                    // 45° off the axis (0, into)
+        const Vec2 d = unit({-to_mouth, into});  // 45° off the axis (0, into)
         for (CushionModel model : {CushionModel::han2005, CushionModel::simple}) {
             for (bool rolling : {false, true}) {
-                SCOPED_TRACE(testing::Message() << "nose of pocket " << nose.pocket << " at x "
-                                                << nose.centre.x << (rolling ? " rolling" : " stun"));
+                SCOPED_TRACE(testing::Message()
+                             << "nose of pocket " << nose.pocket << " at x " << nose.centre.x
+                             << (rolling ? " rolling" : " stun"));
                 const Vec2 start = nose.centre - (kR + nose.radius + 0.3) * d;
                 const Vec2 v = 1.5 * d;
                 const BallState b = make_ball(0, start, v, rolling ? rolling_spin(kP, v) : Vec3{});
-                const Shot shot = run(table, kP, {b}, nullptr, options(BallBallModel::frictional, model));
+                const Shot shot =
+                    run(table, kP, {b}, nullptr, options(BallBallModel::frictional, model));
                 const Event* e = first_event(shot, EventType::cushion);
                 ASSERT_NE(e, nullptr);
                 EXPECT_EQ(e->pocket, nose.pocket);

@@ -67,7 +67,8 @@ TEST(Pockets, SweepAcrossACornerMouthDropsRattlesAndStaysOut) {
     for (int k = -30; k <= 30; ++k) {
         const Vec2 target = corner + (0.004 * k) * across;
         const Outcome o = roll_at(t, {t.length() - 0.7, t.width() - 0.5}, target, 1.0);
-        const bool in_ne = o.dropped && o.pocket == 5;  // a ball that rattles out may drop elsewhere
+        const bool in_ne =
+            o.dropped && o.pocket == 5;  // a ball that rattles out may drop elsewhere
         if (in_ne && o.jaw_hits == 0) ++clean;
         if (in_ne && o.jaw_hits > 0) ++rattled_in;
         if (!in_ne && o.jaw_hits > 0) ++stayed_out_after_jaw;
@@ -105,7 +106,8 @@ TEST(Rack, EightBallTriangleFollowsTheRules) {
         // Back corners: one solid, one stripe.
         std::vector<int> corners;
         for (const BallState& b : balls)
-            if (b.id != 0 && std::fabs(b.pos.x - (t.foot_spot().x + 4 * std::sqrt(3.0) * R)) < 1e-9 &&
+            if (b.id != 0 &&
+                std::fabs(b.pos.x - (t.foot_spot().x + 4 * std::sqrt(3.0) * R)) < 1e-9 &&
                 std::fabs(std::fabs(b.pos.y - t.width() / 2) - 4 * R) < 1e-9)
                 corners.push_back(b.id);
         ASSERT_EQ(corners.size(), 2u);

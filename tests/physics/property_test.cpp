@@ -60,7 +60,8 @@ TEST(PhysicsProperty, TenThousandRandomShotsKeepEveryInvariant) {
                 // Between events: halfway to this one, the closed forms only lose energy.
                 const double mid = kinetic_energy(p, shot.states_at(0.5 * (last_time + e.time)));
                 ASSERT_LE(mid, energy * (1 + 1e-9) + 1e-12)
-                    << "shot " << k << ": energy rose between t=" << last_time << " and t=" << e.time;
+                    << "shot " << k << ": energy rose between t=" << last_time
+                    << " and t=" << e.time;
                 energy = mid;
             }
             last_time = e.time;

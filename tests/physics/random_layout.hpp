@@ -29,8 +29,8 @@ inline RandomShot random_shot(const Table& t, const Params& p, SplitMix64& rng, 
         s.balls[0].pos = {R + rng.uniform() * (t.length() / 4 - 2 * R),
                           R + rng.uniform() * (t.width() - 2 * R)};
         const Vec2 aim = t.foot_spot() - s.balls[0].pos;
-        s.stroke.heading_deg = std::atan2(aim.y, aim.x) * 180.0 / std::numbers::pi +
-                               (rng.uniform() - 0.5) * 10.0;
+        s.stroke.heading_deg =
+            std::atan2(aim.y, aim.x) * 180.0 / std::numbers::pi + (rng.uniform() - 0.5) * 10.0;
         s.stroke.speed = 3.0 + 6.0 * rng.uniform();  // cue speed; ball speed up to ~12 m/s
     } else {
         const int n = 1 + static_cast<int>(rng.below(16));
@@ -38,7 +38,8 @@ inline RandomShot random_shot(const Table& t, const Params& p, SplitMix64& rng, 
             for (int tries = 0; tries < 100; ++tries) {
                 BallState b;
                 b.id = id;
-                b.pos = {R + rng.uniform() * (t.length() - 2 * R), R + rng.uniform() * (t.width() - 2 * R)};
+                b.pos = {R + rng.uniform() * (t.length() - 2 * R),
+                         R + rng.uniform() * (t.width() - 2 * R)};
                 s.balls.push_back(b);
                 if (!validate_layout(t, p, s.balls)) break;
                 s.balls.pop_back();

@@ -11,7 +11,6 @@
 //    samples p in double can promise for a near-double or triple root;
 //  * where the noise band holds one true sign change, exactly one root is reported there;
 //    where it holds a cluster (or a near-touch), the count has the same parity as the truth.
-#include "contact_quartics.hpp"
 #include "physics/roots.hpp"
 
 #include <gtest/gtest.h>
@@ -27,6 +26,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "contact_quartics.hpp"
 
 namespace physics::roots {
 namespace {

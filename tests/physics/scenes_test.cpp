@@ -1,13 +1,14 @@
 // The standard scenes (style.md, rule 8) are shared by the tests, `bench/` and `coolaaber-cli
 // bench`: each must be the shot its name and the issue promise, or the benchmark figures
 // measure something else.
+#include "physics/scenes.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <stdexcept>
 #include <vector>
 
-#include "physics/scenes.hpp"
 #include "physics/simulate.hpp"
 
 namespace physics {
@@ -96,7 +97,8 @@ TEST(Scenes, LongRollIsOneBallOffAtLeastThreeCushions) {
     // A long roll: it travels well over a table length.
     double path = 0.0;
     const std::vector<Segment>& segs = r.shot.segments(0);
-    for (std::size_t k = 1; k < segs.size(); ++k) path += norm(segs[k].start.pos - segs[k - 1].start.pos);
+    for (std::size_t k = 1; k < segs.size(); ++k)
+        path += norm(segs[k].start.pos - segs[k - 1].start.pos);
     EXPECT_GT(path, 2.540);
 }
 

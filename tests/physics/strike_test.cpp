@@ -73,10 +73,10 @@ TEST(Strike, OffCentreSpeedAndSpinAreTpA30) {
 }
 
 TEST(Strike, SignsOfEnglishFollowAndDraw) {
-    EXPECT_GT(strike(kP, stroke(2, 0, 0.3, 0)).spin.z, 0.0);    // right english: ω_z > 0
-    EXPECT_LT(strike(kP, stroke(2, 0, -0.3, 0)).spin.z, 0.0);   // left english
-    EXPECT_GT(strike(kP, stroke(2, 0, 0, 0.3)).spin.y, 0.0);    // follow, heading 0
-    EXPECT_LT(strike(kP, stroke(2, 0, 0, -0.3)).spin.y, 0.0);   // draw
+    EXPECT_GT(strike(kP, stroke(2, 0, 0.3, 0)).spin.z, 0.0);   // right english: ω_z > 0
+    EXPECT_LT(strike(kP, stroke(2, 0, -0.3, 0)).spin.z, 0.0);  // left english
+    EXPECT_GT(strike(kP, stroke(2, 0, 0, 0.3)).spin.y, 0.0);   // follow, heading 0
+    EXPECT_LT(strike(kP, stroke(2, 0, 0, -0.3)).spin.y, 0.0);  // draw
     // Right english stays ω_z > 0 whatever the heading; follow spins about ẑ × heading.
     for (double heading : {45.0, 90.0, 200.0}) {
         const StrikeResult r = strike(kP, stroke(2, heading, 0.3, 0.3));

@@ -1,11 +1,12 @@
 // Table geometry: presets, WPA pocket mouths and facing angles, names, the playing surface.
+#include "physics/table.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
 #include "physics/layout.hpp"
-#include "physics/table.hpp"
 
 namespace physics {
 namespace {

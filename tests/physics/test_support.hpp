@@ -47,13 +47,21 @@ inline Vec3 rolling_spin(const Params& p, Vec2 v, double wz = 0.0) {
     return {-v.y / p.ball_radius, v.x / p.ball_radius, wz};
 }
 
-inline Vec2 unit(Vec2 v) { return (1.0 / norm(v)) * v; }
-inline Vec2 from_angle(double deg) { return {std::cos(deg * kDeg), std::sin(deg * kDeg)}; }
+inline Vec2 unit(Vec2 v) {
+    return (1.0 / norm(v)) * v;
+}
+inline Vec2 from_angle(double deg) {
+    return {std::cos(deg * kDeg), std::sin(deg * kDeg)};
+}
 /// Angle from a to b, counter-clockwise positive (unit: deg).
-inline double angle_deg(Vec2 a, Vec2 b) { return std::atan2(cross(a, b), dot(a, b)) / kDeg; }
+inline double angle_deg(Vec2 a, Vec2 b) {
+    return std::atan2(cross(a, b), dot(a, b)) / kDeg;
+}
 
 /// No cushions, no pockets: collisions and free motion only.
-inline Table unbounded_table() { return build_table(*table_preset("unbounded")); }
+inline Table unbounded_table() {
+    return build_table(*table_preset("unbounded"));
+}
 /// The 9 ft table with closed rails (no pockets).
 inline Table closed_table() {
     TableSpec s = *table_preset("9ft");
@@ -61,7 +69,9 @@ inline Table closed_table() {
     return build_table(s);
 }
 /// The 9 ft table with its pockets.
-inline Table pocket_table() { return build_table(*table_preset("9ft")); }
+inline Table pocket_table() {
+    return build_table(*table_preset("9ft"));
+}
 
 inline SimOptions options(BallBallModel bb = BallBallModel::frictional,
                           CushionModel c = CushionModel::han2005) {
@@ -127,7 +137,9 @@ inline BallState before_event(const Shot& shot, std::size_t index, int id) {
     return before(shot, id, t);
 }
 
-inline double kinetic(const Params& p, const BallState& b) { return kinetic_energy(p, b); }
+inline double kinetic(const Params& p, const BallState& b) {
+    return kinetic_energy(p, b);
+}
 
 /// Relative difference of two numbers, scaled by `scale` (or by their size).
 inline double rel(double a, double b, double scale = 0.0) {
@@ -135,13 +147,14 @@ inline double rel(double a, double b, double scale = 0.0) {
     return s > 0 ? std::fabs(a - b) / s : 0.0;
 }
 
-#define EXPECT_REL(a, b, tol) EXPECT_LE(::physics::ptest::rel((a), (b)), (tol)) << #a " = " << (a) << ", " #b " = " << (b)
-#define EXPECT_VEC_NEAR(a, b, tol)                                                       \
-    do {                                                                                 \
-        const ::physics::Vec2 va_ = (a), vb_ = (b);                                      \
-        EXPECT_LE(::physics::norm(va_ - vb_), (tol))                                     \
+#define EXPECT_REL(a, b, tol) \
+    EXPECT_LE(::physics::ptest::rel((a), (b)), (tol)) << #a " = " << (a) << ", " #b " = " << (b)
+#define EXPECT_VEC_NEAR(a, b, tol)                                                              \
+    do {                                                                                        \
+        const ::physics::Vec2 va_ = (a), vb_ = (b);                                             \
+        EXPECT_LE(::physics::norm(va_ - vb_), (tol))                                            \
             << #a " = (" << va_.x << ", " << va_.y << "), " #b " = (" << vb_.x << ", " << vb_.y \
-            << ")";                                                                      \
+            << ")";                                                                             \
     } while (0)
 
 // ---- The closed forms of physics-model.md, "Motion between events" ----

@@ -58,7 +58,8 @@ TEST(TableMesh, CushionNosesLieOnThePhysicsLinesAtNoseHeight) {
         if (std::abs(v.pos.z - h) > 1e-6f) continue;
         for (const physics::CushionLine& l : table.lines) {
             const physics::Vec2 p{v.pos.x, v.pos.y};
-            const double along = physics::dot(p - l.a, l.dir), off = physics::dot(p - l.a, l.normal);
+            const double along = physics::dot(p - l.a, l.dir),
+                         off = physics::dot(p - l.a, l.normal);
             if (along > -1e-4 && along < l.length + 1e-4 && std::abs(off) < 1e-5) {
                 ++on_lines;
                 break;
@@ -74,14 +75,16 @@ TEST(TableMesh, PocketHolesStartAtTheDropLines) {
     ASSERT_EQ(holes.size(), 6u);
     for (std::size_t i = 0; i < 6; ++i) {
         const physics::Pocket& p = table.pockets[i];
-        const glm::vec2 drop{static_cast<float>(p.drop_point.x), static_cast<float>(p.drop_point.y)};
+        const glm::vec2 drop{static_cast<float>(p.drop_point.x),
+                             static_cast<float>(p.drop_point.y)};
         EXPECT_NEAR(glm::length(holes[i].centre - drop), holes[i].radius, 1e-5f);
         EXPECT_GT(holes[i].radius, static_cast<float>(physics::Params{}.ball_radius));
     }
 }
 
 TEST(Textures, AreDeterministicAndVaried) {
-    const render::TextureData a = render::make_cloth_texture(64), b = render::make_cloth_texture(64);
+    const render::TextureData a = render::make_cloth_texture(64),
+                              b = render::make_cloth_texture(64);
     EXPECT_EQ(a.pixels, b.pixels);
     const auto [lo, hi] = std::minmax_element(a.pixels.begin(), a.pixels.end());
     EXPECT_GT(*hi - *lo, 40);
@@ -96,7 +99,8 @@ TEST(NumberAtlas, HoldsEachNumberCentredInItsCell) {
     ASSERT_EQ(a.height, a.width);
     ASSERT_EQ(a.channels, 1);
     for (int n = 0; n < render::kNumberCells * render::kNumberCells; ++n) {
-        const int cx = (n % render::kNumberCells) * cell, cy_top = (n / render::kNumberCells) * cell;
+        const int cx = (n % render::kNumberCells) * cell,
+                  cy_top = (n / render::kNumberCells) * cell;
         double ink = 0.0, mx = 0.0, my = 0.0;
         for (int y = 0; y < cell; ++y)
             for (int x = 0; x < cell; ++x) {
@@ -117,7 +121,8 @@ TEST(NumberAtlas, HoldsEachNumberCentredInItsCell) {
         EXPECT_NEAR(my / ink, cell / 2.0, 0.12 * cell) << n;
         for (int y = 0; y < cell; ++y)
             for (int x = 0; x < cell; ++x) {
-                const double r = std::hypot(x + 0.5 - cell / 2.0, y + 0.5 - cell / 2.0) / (cell / 2.0);
+                const double r =
+                    std::hypot(x + 0.5 - cell / 2.0, y + 0.5 - cell / 2.0) / (cell / 2.0);
                 const int row = a.height - 1 - (cy_top + y);
                 if (r > 1.0) {
                     EXPECT_EQ(a.pixels[static_cast<std::size_t>(row) * a.width + cx + x], 0) << n;
@@ -126,11 +131,13 @@ TEST(NumberAtlas, HoldsEachNumberCentredInItsCell) {
     }
     // 6 and 9 are underlined (so a turned ball still tells them apart), 8 is not.
     auto ink_below_digits = [&](int n) {
-        const int cx = (n % render::kNumberCells) * cell, cy_top = (n / render::kNumberCells) * cell;
+        const int cx = (n % render::kNumberCells) * cell,
+                  cy_top = (n / render::kNumberCells) * cell;
         int sum = 0;
         for (int y = cell * 85 / 100; y < cell; ++y)
             for (int x = 0; x < cell; ++x)
-                sum += a.pixels[static_cast<std::size_t>(a.height - 1 - (cy_top + y)) * a.width + cx + x];
+                sum += a.pixels[static_cast<std::size_t>(a.height - 1 - (cy_top + y)) * a.width +
+                                cx + x];
         return sum;
     };
     EXPECT_GT(ink_below_digits(6), 255 * cell / 8);
@@ -198,7 +205,8 @@ TEST(Cameras, OverheadShowsTheWholeTableAndTheTray) {
         const render::TableDims d = render::table_dims(table);
         const float out = d.cushion_width + d.rail_width, L = static_cast<float>(table.length()),
                     W = static_cast<float>(table.width());
-        std::vector<glm::vec3> corners = {{-out, -out, d.rail_height}, {L + out, W + out, d.rail_height}};
+        std::vector<glm::vec3> corners = {{-out, -out, d.rail_height},
+                                          {L + out, W + out, d.rail_height}};
         for (int k : {0, 14}) {
             const glm::vec3 p = render::tray_slot(table, R, k);
             corners.push_back(p + glm::vec3(0, -static_cast<float>(R), static_cast<float>(R)));
@@ -210,7 +218,8 @@ TEST(Cameras, OverheadShowsTheWholeTableAndTheTray) {
         }
         // The tray lies outside the south rail, its balls in a row along x.
         EXPECT_LT(render::tray_slot(table, R, 0).y, -out);
-        EXPECT_NEAR(render::tray_slot(table, R, 1).x - render::tray_slot(table, R, 0).x, 2 * R + 0.002, 1e-5);
+        EXPECT_NEAR(render::tray_slot(table, R, 1).x - render::tray_slot(table, R, 0).x,
+                    2 * R + 0.002, 1e-5);
     }
 }
 

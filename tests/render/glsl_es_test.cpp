@@ -1,9 +1,8 @@
 // The shaders' bodies are GLSL ES 3.00-compatible (only the #version line differs): every
 // program the renderer builds compiles and links in an OpenGL ES 3.0 context too (EGL on
 // Mesa llvmpipe, headless).
-#include <gtest/gtest.h>
-
 #include <epoxy/gl.h>
+#include <gtest/gtest.h>
 
 #include <string>
 #include <utility>
@@ -26,10 +25,12 @@ TEST(GlslEs, EveryProgramCompilesAsGlslEs300) {
     };
     for (int k = 0; k <= 4; ++k)
         programs.push_back({"table material " + std::to_string(k),
-                            {g::kTableVert, render::table_fragment_source(static_cast<render::TableMaterial>(k))}});
+                            {g::kTableVert, render::table_fragment_source(
+                                                static_cast<render::TableMaterial>(k))}});
     for (const auto& [name, sources] : programs) {
         unsigned program = 0;
-        EXPECT_NO_THROW(program = render::build_program(sources.first, sources.second, render::GlslTarget::es300))
+        EXPECT_NO_THROW(program = render::build_program(sources.first, sources.second,
+                                                        render::GlslTarget::es300))
             << name;
         EXPECT_NE(program, 0u) << name;
         if (program) glDeleteProgram(program);

@@ -23,7 +23,7 @@ constexpr int kTolerance = 6;
 constexpr double kMaxFractionOver = 0.002;
 
 class GoldenTest : public ::testing::Test {
-protected:
+  protected:
     static void SetUpTestSuite() { context_ = std::make_unique<render::HeadlessContext>(); }
     static void TearDownTestSuite() { context_.reset(); }
 
@@ -51,13 +51,16 @@ protected:
             return;
         }
         const render::Image expected = render::load_png(golden.string());
-        ASSERT_GT(expected.width, 0) << "missing golden " << golden
-                                     << ": run tools/render/regenerate_goldens.sh and look at the result";
+        ASSERT_GT(expected.width, 0)
+            << "missing golden " << golden
+            << ": run tools/render/regenerate_goldens.sh and look at the result";
         const render::ImageDiff d = render::compare(actual, expected, kTolerance);
-        ASSERT_TRUE(d.same_size) << name << ": golden is " << expected.width << "x" << expected.height;
+        ASSERT_TRUE(d.same_size) << name << ": golden is " << expected.width << "x"
+                                 << expected.height;
         EXPECT_LE(d.fraction_over, kMaxFractionOver)
-            << name << ": " << d.fraction_over * 100 << "% of pixels differ by more than " << kTolerance
-            << " (largest difference " << d.max_channel_diff << "); actual image: " << out
+            << name << ": " << d.fraction_over * 100 << "% of pixels differ by more than "
+            << kTolerance << " (largest difference " << d.max_channel_diff
+            << "); actual image: " << out
             << "; if the change is intended, run tools/render/regenerate_goldens.sh";
     }
 
@@ -68,19 +71,33 @@ std::unique_ptr<render::HeadlessContext> GoldenTest::context_;
 
 constexpr float kAspect = static_cast<float>(kWidth) / static_cast<float>(kHeight);
 
-TEST_F(GoldenTest, RackedTableOverhead) { check("racked_overhead", draw(render::racked_scene(kAspect))); }
+TEST_F(GoldenTest, RackedTableOverhead) {
+    check("racked_overhead", draw(render::racked_scene(kAspect)));
+}
 
-TEST_F(GoldenTest, BallMidRoll) { check("mid_roll", draw(render::mid_roll_scene(kAspect))); }
+TEST_F(GoldenTest, BallMidRoll) {
+    check("mid_roll", draw(render::mid_roll_scene(kAspect)));
+}
 
-TEST_F(GoldenTest, MidGameOverhead) { check("mid_game", draw(render::mid_game_scene(kAspect))); }
+TEST_F(GoldenTest, MidGameOverhead) {
+    check("mid_game", draw(render::mid_game_scene(kAspect)));
+}
 
-TEST_F(GoldenTest, CueBallViewWithAimGuide) { check("cue_view", draw(render::cue_view_scene(kAspect))); }
+TEST_F(GoldenTest, CueBallViewWithAimGuide) {
+    check("cue_view", draw(render::cue_view_scene(kAspect)));
+}
 
-TEST_F(GoldenTest, AimOverheadWithCueShadow) { check("aim_overhead", draw(render::aim_overhead_scene(kAspect))); }
+TEST_F(GoldenTest, AimOverheadWithCueShadow) {
+    check("aim_overhead", draw(render::aim_overhead_scene(kAspect)));
+}
 
-TEST_F(GoldenTest, BallShadowsOnTheCushion) { check("cushion", draw(render::cushion_scene(kAspect))); }
+TEST_F(GoldenTest, BallShadowsOnTheCushion) {
+    check("cushion", draw(render::cushion_scene(kAspect)));
+}
 
-TEST_F(GoldenTest, BallInHandAndTray) { check("ball_in_hand", draw(render::ball_in_hand_scene(kAspect))); }
+TEST_F(GoldenTest, BallInHandAndTray) {
+    check("ball_in_hand", draw(render::ball_in_hand_scene(kAspect)));
+}
 
 TEST_F(GoldenTest, RendersAreRepeatable) {
     const render::DemoScene scene = render::racked_scene(kAspect);
@@ -107,7 +124,8 @@ TEST_F(GoldenTest, ExposureChangeReachesTheBakedCloth) {
     renderer.settings().exposure = 1.0f;
     const render::Image again = frame();
     // The middle of the cloth, green channel.
-    const std::size_t centre = (static_cast<std::size_t>(kHeight / 2) * kWidth + kWidth / 3) * 4 + 1;
+    const std::size_t centre =
+        (static_cast<std::size_t>(kHeight / 2) * kWidth + kWidth / 3) * 4 + 1;
     EXPECT_GT(bright.rgba[centre], normal.rgba[centre] + 10);
     EXPECT_EQ(render::compare(normal, again, 0).max_channel_diff, 0);
 }
