@@ -73,6 +73,46 @@ void open_new_game(PanelState& st, const Settings& settings) {
     st.new_game_open = true;
 }
 
+// One row of the New Game dialog: the seat's name and who plays it.
+void seat_row(NewGame& d, std::size_t seat, const std::vector<std::string>& kinds) {
+    ImGui::PushID(static_cast<int>(seat));
+    char buf[41];
+    std::snprintf(buf, sizeof buf, "%s", d.names[seat].c_str());
+    ImGui::SetNextItemWidth(150);
+    if (ImGui::InputText("##name", buf, sizeof buf) && buf[0] != '\0') d.names[seat] = buf;
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(130);
+    const std::string& current = d.players[seat];
+    if (ImGui::BeginCombo("##kind", seat_words(current).c_str())) {
+        for (const std::string& k : kinds) {
+            if (ImGui::Selectable(seat_words(k).c_str(), k == current)) d.players[seat] = k;
+        }
+        ImGui::EndCombo();
+    }
+    ImGui::PopID();
+}
+
+void house_rules_editor(rules::Options& o) {
+    int calls = static_cast<int>(o.call_shots);
+    ImGui::Text("Calling:");
+    ImGui::RadioButton("every shot", &calls, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("the 8 only", &calls, 1);
+    ImGui::SameLine();
+    ImGui::RadioButton("none", &calls, 2);
+    o.call_shots = static_cast<rules::CallShots>(calls);
+    bool wins = o.eight_on_break == rules::EightOnBreak::wins;
+    ImGui::Checkbox("8 on the break wins", &wins);
+    o.eight_on_break = wins ? rules::EightOnBreak::wins : rules::EightOnBreak::spot_or_rebreak;
+    bool kitchen = o.foul_ball_in_hand == rules::FoulBallInHand::kitchen;
+    ImGui::Checkbox("Ball in hand after a foul: kitchen only", &kitchen);
+    o.foul_ball_in_hand =
+        kitchen ? rules::FoulBallInHand::kitchen : rules::FoulBallInHand::anywhere;
+    ImGui::Checkbox("Scratch on the 8 loses", &o.scratch_on_eight_loses);
+    ImGui::Checkbox("Groups decided on the break", &o.groups_on_break);
+    ImGui::Checkbox("Rail after contact required", &o.rail_after_contact);
+}
+
 void new_game_dialog(PanelState& st, PanelActions& out, bool ai_available) {
     if (st.new_game_open) {
         ImGui::OpenPopup("New Game");
@@ -89,46 +129,9 @@ void new_game_dialog(PanelState& st, PanelActions& out, bool ai_available) {
     std::vector<std::string> kinds{"human", "random"};
     if (ai_available)
         for (int level = 1; level <= 5; ++level) kinds.push_back(fmt::format("ai:{}", level));
-    for (int i = 0; i < 2; ++i) {
-        ImGui::PushID(i);
-        char buf[41];
-        std::snprintf(buf, sizeof buf, "%s", d.names[static_cast<std::size_t>(i)].c_str());
-        ImGui::SetNextItemWidth(150);
-        if (ImGui::InputText("##name", buf, sizeof buf) && buf[0] != '\0')
-            d.names[static_cast<std::size_t>(i)] = buf;
-        ImGui::SameLine();
-        ImGui::SetNextItemWidth(130);
-        const std::string& current = d.players[static_cast<std::size_t>(i)];
-        if (ImGui::BeginCombo("##kind", seat_words(current).c_str())) {
-            for (const std::string& k : kinds) {
-                if (ImGui::Selectable(seat_words(k).c_str(), k == current))
-                    d.players[static_cast<std::size_t>(i)] = k;
-            }
-            ImGui::EndCombo();
-        }
-        ImGui::PopID();
-    }
-    if (d.game == rules::Game::eight_ball && ImGui::CollapsingHeader("House rules (8-ball)")) {
-        rules::Options& o = d.house_rules;
-        int calls = static_cast<int>(o.call_shots);
-        ImGui::Text("Calling:");
-        ImGui::RadioButton("every shot", &calls, 0);
-        ImGui::SameLine();
-        ImGui::RadioButton("the 8 only", &calls, 1);
-        ImGui::SameLine();
-        ImGui::RadioButton("none", &calls, 2);
-        o.call_shots = static_cast<rules::CallShots>(calls);
-        bool wins = o.eight_on_break == rules::EightOnBreak::wins;
-        ImGui::Checkbox("8 on the break wins", &wins);
-        o.eight_on_break = wins ? rules::EightOnBreak::wins : rules::EightOnBreak::spot_or_rebreak;
-        bool kitchen = o.foul_ball_in_hand == rules::FoulBallInHand::kitchen;
-        ImGui::Checkbox("Ball in hand after a foul: kitchen only", &kitchen);
-        o.foul_ball_in_hand =
-            kitchen ? rules::FoulBallInHand::kitchen : rules::FoulBallInHand::anywhere;
-        ImGui::Checkbox("Scratch on the 8 loses", &o.scratch_on_eight_loses);
-        ImGui::Checkbox("Groups decided on the break", &o.groups_on_break);
-        ImGui::Checkbox("Rail after contact required", &o.rail_after_contact);
-    }
+    for (std::size_t seat = 0; seat < 2; ++seat) seat_row(d, seat, kinds);
+    if (d.game == rules::Game::eight_ball && ImGui::CollapsingHeader("House rules (8-ball)"))
+        house_rules_editor(d.house_rules);
     ImGui::Separator();
     const bool start = ImGui::Button("Start", ImVec2(120, 0));
     remember(st, "Start");
@@ -141,18 +144,8 @@ void new_game_dialog(PanelState& st, PanelActions& out, bool ai_available) {
     ImGui::EndPopup();
 }
 
-}  // namespace
-
-PanelActions draw_panel(const Controller& c, const Settings& settings, PanelState& st, float width,
-                        float height, bool ai_available) {
-    PanelActions out;
-    st.widgets.clear();
-    const game::Session& s = c.session();
-    ImGui::SetNextWindowPos(ImVec2(width - panel_width, 0));
-    ImGui::SetNextWindowSize(ImVec2(panel_width, height));
-    ImGui::Begin("Coolaaber", nullptr,
-                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                     ImGuiWindowFlags_NoTitleBar);
+// The title line and any notice (e.g. a saved game set aside), dismissed with OK.
+void header(const game::Session& s, PanelState& st) {
     ImGui::TextColored(accent, "COOLAABER");
     ImGui::SameLine();
     ImGui::TextDisabled("%s  game %d",
@@ -165,8 +158,12 @@ PanelActions draw_panel(const Controller& c, const Settings& settings, PanelStat
         if (ImGui::SmallButton("OK")) st.notice.clear();
     }
     ImGui::Separator();
+}
 
-    // ---- The original controls
+// The original game's controls: Power, Sound, Change View, Restart, Exit.
+void original_controls(const Controller& c, const Settings& settings, PanelState& st,
+                       PanelActions& out) {
+    const game::Session& s = c.session();
     float power = static_cast<float>(c.aim().power * 100.0);
     ImGui::Text("Power");
     ImGui::SetNextItemWidth(-1.0f);
@@ -182,8 +179,10 @@ PanelActions draw_panel(const Controller& c, const Settings& settings, PanelStat
             st.confirm_restart = true;
     }
     if (full_button(st, "Exit")) out.exit = true;
+}
 
-    // ---- The information bar
+// The information bar: whose turn, the groups, the last shot in words; and any pending choice.
+void information_bar(const Controller& c, PanelState& st, PanelActions& out) {
     ImGui::Separator();
     ImGui::PushTextWrapPos(0.0f);
     const std::vector<std::string> lines = c.info();
@@ -197,12 +196,15 @@ PanelActions draw_panel(const Controller& c, const Settings& settings, PanelStat
     if (!c.last_shot_words().empty()) ImGui::TextDisabled("%s", c.last_shot_words().c_str());
     if (!c.refusal().empty()) ImGui::TextColored(warning, "%s", c.refusal().c_str());
     ImGui::PopTextWrapPos();
-    const bool mine = c.human_to_act();
-    if (std::optional<rules::Choice> choice = s.choice(); choice && mine)
+    if (std::optional<rules::Choice> choice = c.session().choice(); choice && c.human_to_act())
         for (rules::ChoiceOption o : choice->options)
             if (full_button(st, choice_words(o).c_str())) out.choice = o;
+}
 
-    // ---- The stroke
+// Spin, elevation, push-out and the calls: what the next stroke will be.
+void stroke_controls(const Controller& c, PanelActions& out) {
+    const game::Session& s = c.session();
+    const bool mine = c.human_to_act();
     ImGui::Separator();
     ImGui::Text("Tip (spin)");
     if (auto spin = spin_picker(c.aim().side, c.aim().top, mine)) out.spin = spin;
@@ -229,9 +231,14 @@ PanelActions draw_panel(const Controller& c, const Settings& settings, PanelStat
             if (ImGui::Button("Call from aim")) out.clear_call = true;
         }
     }
+}
+
+// Aim guide, Strike, Hint, Skip or Replay, New Game and the controls' help.
+void play_buttons(const Controller& c, const Settings& settings, PanelState& st, PanelActions& out,
+                  bool ai_available) {
     bool guide = settings.aim_guide;
     if (ImGui::Checkbox("Aim guide", &guide)) out.aim_guide = guide;
-    if (mine && s.phase() == game::Phase::shoot) {
+    if (c.human_to_act() && c.session().phase() == game::Phase::shoot) {
         if (full_button(st, "Strike")) out.strike = true;
         if (ai_available && full_button(st, "Hint")) out.hint = true;
     }
@@ -252,44 +259,68 @@ PanelActions draw_panel(const Controller& c, const Settings& settings, PanelStat
         ImGui::TextDisabled("V view, O free view, wheel zoom");
         ImGui::TextDisabled("R restart, Esc menu, F11 fullscreen");
     }
+}
 
-    new_game_dialog(st, out, ai_available);
+void restart_dialog(PanelState& st, PanelActions& out) {
     if (st.confirm_restart) {
         ImGui::OpenPopup("Restart?");
         st.confirm_restart = false;
     }
-    if (ImGui::BeginPopupModal("Restart?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        ImGui::Text("Abandon this game and rack again?");
-        const bool yes = ImGui::Button("Yes, restart", ImVec2(130, 0));
-        remember(st, "Yes, restart");
-        if (yes) {
-            out.restart = true;
-            ImGui::CloseCurrentPopup();
-        }
-        ImGui::SameLine();
-        if (ImGui::Button("No", ImVec2(130, 0))) ImGui::CloseCurrentPopup();
-        ImGui::EndPopup();
+    if (!ImGui::BeginPopupModal("Restart?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    ImGui::Text("Abandon this game and rack again?");
+    const bool yes = ImGui::Button("Yes, restart", ImVec2(130, 0));
+    remember(st, "Yes, restart");
+    if (yes) {
+        out.restart = true;
+        ImGui::CloseCurrentPopup();
     }
+    ImGui::SameLine();
+    if (ImGui::Button("No", ImVec2(130, 0))) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+}
+
+// The Esc menu.
+void menu_dialog(const Settings& settings, PanelState& st, PanelActions& out) {
     if (st.menu) {
         ImGui::OpenPopup("Menu");
         st.menu = false;
     }
-    if (ImGui::BeginPopupModal("Menu", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        if (ImGui::Button("Resume", ImVec2(200, 0))) ImGui::CloseCurrentPopup();
-        if (ImGui::Button("New Game...", ImVec2(200, 0))) {
-            open_new_game(st, settings);
-            ImGui::CloseCurrentPopup();
-        }
-        if (ImGui::Button("Restart", ImVec2(200, 0))) {
-            st.confirm_restart = true;
-            ImGui::CloseCurrentPopup();
-        }
-        if (ImGui::Button("Save and exit", ImVec2(200, 0))) {
-            out.exit = true;
-            ImGui::CloseCurrentPopup();
-        }
-        ImGui::EndPopup();
+    if (!ImGui::BeginPopupModal("Menu", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    if (ImGui::Button("Resume", ImVec2(200, 0))) ImGui::CloseCurrentPopup();
+    if (ImGui::Button("New Game...", ImVec2(200, 0))) {
+        open_new_game(st, settings);
+        ImGui::CloseCurrentPopup();
     }
+    if (ImGui::Button("Restart", ImVec2(200, 0))) {
+        st.confirm_restart = true;
+        ImGui::CloseCurrentPopup();
+    }
+    if (ImGui::Button("Save and exit", ImVec2(200, 0))) {
+        out.exit = true;
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+}
+
+}  // namespace
+
+PanelActions draw_panel(const Controller& c, const Settings& settings, PanelState& st, float width,
+                        float height, bool ai_available) {
+    PanelActions out;
+    st.widgets.clear();
+    ImGui::SetNextWindowPos(ImVec2(width - panel_width, 0));
+    ImGui::SetNextWindowSize(ImVec2(panel_width, height));
+    ImGui::Begin("Coolaaber", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                     ImGuiWindowFlags_NoTitleBar);
+    header(c.session(), st);
+    original_controls(c, settings, st, out);
+    information_bar(c, st, out);
+    stroke_controls(c, out);
+    play_buttons(c, settings, st, out, ai_available);
+    new_game_dialog(st, out, ai_available);
+    restart_dialog(st, out);
+    menu_dialog(settings, st, out);
     ImGui::End();
     return out;
 }

@@ -201,6 +201,14 @@ struct Renderer::Impl {
     GLuint cache_fbo = 0, cache_colour = 0, cache_depth = 0;
     std::vector<float> cache_key;
 
+    // Construction, in order.
+    void build_hole_grid();
+    void upload_table_meshes();
+    void make_vertex_arrays();
+    void build_programs();
+    void upload_textures();
+    void place_lamps();
+
     void draw_table(const glm::mat4& view_proj, const glm::vec3& eye);
     /// Flat (lit = false, blended with `alpha`, no depth writes) or lit solid geometry.
     void draw_solid(const std::vector<SolidVertex>& v, bool lit, float alpha,
@@ -395,6 +403,96 @@ bool Renderer::Impl::use_cache(const FrameView& frame, int width, int height,
     return true;
 }
 
+void Renderer::Impl::build_hole_grid() {
+    const float L = static_cast<float>(table.length()), W = static_cast<float>(table.width());
+    std::array<bool, 6> used{};
+    for (std::size_t i = 0; i < holes.size() && i < 6; ++i) {
+        const glm::vec2 c = holes[i].centre;
+        const int ix = std::clamp(static_cast<int>(std::floor(c.x / (0.5f * L) + 0.5f)), 0, 2);
+        const std::size_t k = static_cast<std::size_t>(ix + (c.y > 0.5f * W ? 3 : 0));
+        // A table whose pockets do not form the grid keeps them in order (hole_distance then
+        // only approximates the nearest).
+        const std::size_t slot = used[k] ? i : k;
+        used[slot] = true;
+        hole_grid[slot] = {c, holes[i].radius};
+    }
+}
+
+void Renderer::Impl::upload_table_meshes() {
+    const TableMesh mesh = build_table_mesh(table);
+    cloth = upload(mesh.cloth);
+    cushions = upload(mesh.cushions);
+    // The rail tops (flat, at rail height) apart from the bevels and sides: their diffuse
+    // light is baked.
+    std::vector<Vertex> tops, rest;
+    for (std::size_t i = 0; i + 2 < mesh.rails.size(); i += 3) {
+        bool top = true;
+        for (std::size_t k = i; k < i + 3; ++k)
+            top = top && std::abs(mesh.rails[k].normal.z) > 0.999f &&
+                  std::abs(mesh.rails[k].pos.z - dims.rail_height) < 1e-5f;
+        (top ? tops : rest)
+            .insert((top ? tops : rest).end(), mesh.rails.begin() + static_cast<std::ptrdiff_t>(i),
+                    mesh.rails.begin() + static_cast<std::ptrdiff_t>(i + 3));
+    }
+    rails = upload(rest);
+    rail_tops = upload(tops);
+}
+
+// The full-screen quad and the streamed solid geometry (position, normal, colour).
+void Renderer::Impl::make_vertex_arrays() {
+    const float corners[] = {-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1};
+    glGenVertexArrays(1, &quad_vao);
+    glGenBuffers(1, &quad_vbo);
+    glBindVertexArray(quad_vao);
+    glBindBuffer(GL_ARRAY_BUFFER, quad_vbo);
+    glBufferData(GL_ARRAY_BUFFER, sizeof corners, corners, GL_STATIC_DRAW);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
+
+    glGenVertexArrays(1, &solid_vao);
+    glGenBuffers(1, &solid_vbo);
+    glBindVertexArray(solid_vao);
+    glBindBuffer(GL_ARRAY_BUFFER, solid_vbo);
+    for (GLuint i = 0; i < 3; ++i) {
+        glEnableVertexAttribArray(i);
+        glVertexAttribPointer(i, 3, GL_FLOAT, GL_FALSE, sizeof(SolidVertex),
+                              reinterpret_cast<void*>(sizeof(glm::vec3) * i));
+    }
+    glBindVertexArray(0);
+}
+
+void Renderer::Impl::build_programs() {
+    for (int i = 0; i < 5; ++i)
+        table_progs[static_cast<std::size_t>(i)] =
+            build_program(glsl::kTableVert, table_fragment_source(static_cast<TableMaterial>(i)));
+    ball_prog = build_program(glsl::kBallVert, glsl::kBallFrag);
+    shadow_prog = build_program(glsl::kShadowVert, glsl::kShadowFrag);
+    cue_shadow_prog = build_program(glsl::kCueShadowVert, glsl::kCueShadowFrag);
+    cushion_shadow_prog = build_program(glsl::kTableVert, glsl::kCushionShadowFrag);
+    solid_prog = build_program(glsl::kSolidVert, glsl::kSolidFrag);
+}
+
+void Renderer::Impl::upload_textures() {
+    cloth_tex = upload_texture(make_cloth_texture());
+    // One mip level per pixel, not two: the cloth is most of the frame, and the nap's levels
+    // differ too little for the switch between them to show (looked at in the cue view).
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
+    wood_tex = upload_texture(make_wood_texture(), true);
+    number_tex = upload_texture(make_number_atlas(settings.number_font));
+    // Mipmaps down to 4 texels a cell, so far-away numbers blur instead of mixing cells.
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 4);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+// Three shaded lamps along the table's long axis, about 1 m above the cloth.
+void Renderer::Impl::place_lamps() {
+    const float L = static_cast<float>(table.length()), W = static_cast<float>(table.width());
+    for (int i = 0; i < 3; ++i)
+        lamps[static_cast<std::size_t>(i)] = {L * (0.5f + 0.3f * static_cast<float>(i - 1)), W / 2,
+                                              1.0f, 0.16f};
+}
+
 Renderer::Renderer(const physics::Table& table, double ball_radius, RenderSettings settings)
     : impl_(std::make_unique<Impl>()) {
     Impl& m = *impl_;
@@ -403,82 +501,12 @@ Renderer::Renderer(const physics::Table& table, double ball_radius, RenderSettin
     m.settings = settings;
     m.dims = table_dims(table);
     m.holes = pocket_holes(table);
-    {
-        const float L = static_cast<float>(table.length()), W = static_cast<float>(table.width());
-        std::array<bool, 6> used{};
-        for (std::size_t i = 0; i < m.holes.size() && i < 6; ++i) {
-            const glm::vec2 c = m.holes[i].centre;
-            const int ix = std::clamp(static_cast<int>(std::floor(c.x / (0.5f * L) + 0.5f)), 0, 2);
-            const std::size_t k = static_cast<std::size_t>(ix + (c.y > 0.5f * W ? 3 : 0));
-            // A table whose pockets do not form the grid keeps them in order (hole_distance then
-            // only approximates the nearest).
-            const std::size_t slot = used[k] ? i : k;
-            used[slot] = true;
-            m.hole_grid[slot] = {c, m.holes[i].radius};
-        }
-    }
-    const TableMesh mesh = build_table_mesh(table);
-    m.cloth = upload(mesh.cloth);
-    m.cushions = upload(mesh.cushions);
-    // The rail tops (flat, at rail height) apart from the bevels and sides: their diffuse
-    // light is baked.
-    std::vector<Vertex> tops, rest;
-    for (std::size_t i = 0; i + 2 < mesh.rails.size(); i += 3) {
-        bool top = true;
-        for (std::size_t k = i; k < i + 3; ++k)
-            top = top && std::abs(mesh.rails[k].normal.z) > 0.999f &&
-                  std::abs(mesh.rails[k].pos.z - m.dims.rail_height) < 1e-5f;
-        (top ? tops : rest)
-            .insert((top ? tops : rest).end(), mesh.rails.begin() + static_cast<std::ptrdiff_t>(i),
-                    mesh.rails.begin() + static_cast<std::ptrdiff_t>(i + 3));
-    }
-    m.rails = upload(rest);
-    m.rail_tops = upload(tops);
-
-    const float corners[] = {-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1};
-    glGenVertexArrays(1, &m.quad_vao);
-    glGenBuffers(1, &m.quad_vbo);
-    glBindVertexArray(m.quad_vao);
-    glBindBuffer(GL_ARRAY_BUFFER, m.quad_vbo);
-    glBufferData(GL_ARRAY_BUFFER, sizeof corners, corners, GL_STATIC_DRAW);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
-
-    glGenVertexArrays(1, &m.solid_vao);
-    glGenBuffers(1, &m.solid_vbo);
-    glBindVertexArray(m.solid_vao);
-    glBindBuffer(GL_ARRAY_BUFFER, m.solid_vbo);
-    for (GLuint i = 0; i < 3; ++i) {
-        glEnableVertexAttribArray(i);
-        glVertexAttribPointer(i, 3, GL_FLOAT, GL_FALSE, sizeof(SolidVertex),
-                              reinterpret_cast<void*>(sizeof(glm::vec3) * i));
-    }
-    glBindVertexArray(0);
-
-    for (int i = 0; i < 5; ++i)
-        m.table_progs[static_cast<std::size_t>(i)] =
-            build_program(glsl::kTableVert, table_fragment_source(static_cast<TableMaterial>(i)));
-    m.ball_prog = build_program(glsl::kBallVert, glsl::kBallFrag);
-    m.shadow_prog = build_program(glsl::kShadowVert, glsl::kShadowFrag);
-    m.cue_shadow_prog = build_program(glsl::kCueShadowVert, glsl::kCueShadowFrag);
-    m.cushion_shadow_prog = build_program(glsl::kTableVert, glsl::kCushionShadowFrag);
-    m.solid_prog = build_program(glsl::kSolidVert, glsl::kSolidFrag);
-    m.cloth_tex = upload_texture(make_cloth_texture());
-    // One mip level per pixel, not two: the cloth is most of the frame, and the nap's levels
-    // differ too little for the switch between them to show (looked at in the cue view).
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
-    m.wood_tex = upload_texture(make_wood_texture(), true);
-    m.number_tex = upload_texture(make_number_atlas(settings.number_font));
-    // Mipmaps down to 4 texels a cell, so far-away numbers blur instead of mixing cells.
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 4);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-
-    // Three shaded lamps along the table's long axis, about 1 m above the cloth.
-    const float L = static_cast<float>(table.length()), W = static_cast<float>(table.width());
-    for (int i = 0; i < 3; ++i)
-        m.lamps[static_cast<std::size_t>(i)] = {L * (0.5f + 0.3f * static_cast<float>(i - 1)),
-                                                W / 2, 1.0f, 0.16f};
+    m.build_hole_grid();
+    m.upload_table_meshes();
+    m.make_vertex_arrays();
+    m.build_programs();
+    m.upload_textures();
+    m.place_lamps();
     m.bake_cloth_light();
 }
 
