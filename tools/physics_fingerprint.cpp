@@ -3,7 +3,7 @@
 // event and every segment, for the standard scenes and for N random shots (the property
 // tests' random_shot: breaks and random layouts and strokes) on each of the 7ft, 8ft and 9ft
 // tables. Build it against each engine and compare the outputs (docs/physics.md, Performance):
-// the target `physics_fingerprint` (bench/CMakeLists.txt), or for an older checkout by hand:
+// the target `physics_fingerprint` (tools/CMakeLists.txt), or for an older checkout by hand:
 //   g++ -std=c++20 -O3 -DNDEBUG -ffp-contract=off -fno-math-errno -Isrc -Itests/physics
 //       tools/physics_fingerprint.cpp src/physics/*.cpp -o /tmp/fingerprint   (one line)
 //   /tmp/fingerprint 10000 12345 > after.txt   (shots per table, seed; events on stderr)

@@ -401,9 +401,8 @@ int run_window(const AppOptions& options) {
                 mouse_pressed[i] = false;
             }
             ImGui::NewFrame();
-            const PanelActions actions =
-                draw_panel(t.controller, t.setup.settings, t.panel, static_cast<float>(w),
-                           static_cast<float>(h), ai_available());
+            const PanelActions actions = draw_panel(t.controller, t.setup.settings, t.panel,
+                                                    static_cast<float>(w), static_cast<float>(h));
             ImGui::Render();
             t.apply(actions);
             if (!mouse_down[0] && !mouse_down[1] && !mouse_down[2])
@@ -457,7 +456,7 @@ int run_screenshot(const AppOptions& options) {
             ImGui_ImplOpenGL3_NewFrame();
             ImGui::NewFrame();
             (void)draw_panel(t.controller, t.setup.settings, t.panel, static_cast<float>(w),
-                             static_cast<float>(h), ai_available());
+                             static_cast<float>(h));
             ImGui::Render();
         }
         const float aspect =

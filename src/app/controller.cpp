@@ -274,7 +274,7 @@ void Controller::update(double dt) {
 }
 
 void Controller::hint() {
-    if (!human_to_act() || session_.phase() != game::Phase::shoot || !ai_available()) return;
+    if (!human_to_act() || session_.phase() != game::Phase::shoot) return;
     hint_player_ = make_computer(
         "ai:5", derive(options_.seed, 100 + static_cast<std::uint64_t>(hints_++)), options_.noise);
     game::Player* player = hint_player_.get();

@@ -113,7 +113,7 @@ void house_rules_editor(rules::Options& o) {
     ImGui::Checkbox("Rail after contact required", &o.rail_after_contact);
 }
 
-void new_game_dialog(PanelState& st, PanelActions& out, bool ai_available) {
+void new_game_dialog(PanelState& st, PanelActions& out) {
     if (st.new_game_open) {
         ImGui::OpenPopup("New Game");
         st.new_game_open = false;
@@ -127,8 +127,7 @@ void new_game_dialog(PanelState& st, PanelActions& out, bool ai_available) {
     ImGui::RadioButton("9-ball", &game, 1);
     d.game = game == 0 ? rules::Game::eight_ball : rules::Game::nine_ball;
     std::vector<std::string> kinds{"human", "random"};
-    if (ai_available)
-        for (int level = 1; level <= 5; ++level) kinds.push_back(fmt::format("ai:{}", level));
+    for (int level = 1; level <= 5; ++level) kinds.push_back(fmt::format("ai:{}", level));
     for (std::size_t seat = 0; seat < 2; ++seat) seat_row(d, seat, kinds);
     if (d.game == rules::Game::eight_ball && ImGui::CollapsingHeader("House rules (8-ball)"))
         house_rules_editor(d.house_rules);
@@ -234,13 +233,13 @@ void stroke_controls(const Controller& c, PanelActions& out) {
 }
 
 // Aim guide, Strike, Hint, Skip or Replay, New Game and the controls' help.
-void play_buttons(const Controller& c, const Settings& settings, PanelState& st, PanelActions& out,
-                  bool ai_available) {
+void play_buttons(const Controller& c, const Settings& settings, PanelState& st,
+                  PanelActions& out) {
     bool guide = settings.aim_guide;
     if (ImGui::Checkbox("Aim guide", &guide)) out.aim_guide = guide;
     if (c.human_to_act() && c.session().phase() == game::Phase::shoot) {
         if (full_button(st, "Strike")) out.strike = true;
-        if (ai_available && full_button(st, "Hint")) out.hint = true;
+        if (full_button(st, "Hint")) out.hint = true;
     }
     if (c.moving()) {
         if (full_button(st, "Skip")) out.skip = true;
@@ -305,7 +304,7 @@ void menu_dialog(const Settings& settings, PanelState& st, PanelActions& out) {
 }  // namespace
 
 PanelActions draw_panel(const Controller& c, const Settings& settings, PanelState& st, float width,
-                        float height, bool ai_available) {
+                        float height) {
     PanelActions out;
     st.widgets.clear();
     ImGui::SetNextWindowPos(ImVec2(width - panel_width, 0));
@@ -317,8 +316,8 @@ PanelActions draw_panel(const Controller& c, const Settings& settings, PanelStat
     original_controls(c, settings, st, out);
     information_bar(c, st, out);
     stroke_controls(c, out);
-    play_buttons(c, settings, st, out, ai_available);
-    new_game_dialog(st, out, ai_available);
+    play_buttons(c, settings, st, out);
+    new_game_dialog(st, out);
     restart_dialog(st, out);
     menu_dialog(settings, st, out);
     ImGui::End();

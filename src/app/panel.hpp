@@ -60,6 +60,6 @@ inline constexpr float panel_width = 300.0f;  ///< (unit: px)
 /// Draws the panel at the right edge of a `width` × `height` window. Call between
 /// ImGui::NewFrame() and ImGui::Render().
 PanelActions draw_panel(const Controller& controller, const Settings& settings, PanelState& state,
-                        float width, float height, bool ai_available);
+                        float width, float height);
 
 }  // namespace app

@@ -13,11 +13,8 @@ namespace app {
 
 /// A computer player of `kind` ("random", "ai:1" … "ai:5"), seeded, planning for execution
 /// noise of scale `noise`; null for "human". Throws std::invalid_argument naming the kind
-/// when it is unknown or not built in.
+/// when it is unknown.
 std::unique_ptr<game::Player> make_computer(const std::string& kind, std::uint64_t seed,
                                             double noise);
-
-/// Whether this build has the AI players ("ai:1" … "ai:5").
-bool ai_available();
 
 }  // namespace app

@@ -231,7 +231,6 @@ TEST(Controller, NothingHappensWhenItIsNotTheHumansTurn) {
 namespace {
 
 TEST(Controller, AHintSetsTheAimOfTheStrongestAiWithoutStriking) {
-    if (!app::ai_available()) GTEST_SKIP() << "built without the AI";
     app::Controller c(new_session(), options());
     c.set_power(0.9);
     c.strike();
