@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Summarizes a `coolaaber-cli simulate` output for a human.
 
-Reads the output document (cli-contract.md) on standard input and prints which balls were
+Reads the output document (docs/cli.md) on standard input and prints which balls were
 pocketed and where, the events by type, how many object balls reached a cushion, the time to
 rest, and whether the shot was truncated by the event cap.
 

@@ -1,4 +1,4 @@
-// The AI's decision in one position (the `decide` verb of cli-contract.md):
+// The AI's decision in one position (the `decide` verb of docs/cli.md):
 //
 //   choice pending ─▶ the option worth most (table_value.hpp)
 //   break          ─▶ break candidates, each played with noise draws (9-ball, level 5: the tuned)

@@ -1,4 +1,4 @@
-// The verbs of coolaaber-cli (cli-contract.md). Each takes the parsed input document and
+// The verbs of coolaaber-cli (docs/cli.md). Each takes the parsed input document and
 // returns the output document; bad input throws cli::BadInput.
 #pragma once
 

@@ -1,4 +1,4 @@
-// `decide` (cli-contract.md): the computer player's decision in one position. Reading the game,
+// `decide` (docs/cli.md): the computer player's decision in one position. Reading the game,
 // table, options and state is rules_json's (the same checks as `judge`), plus what the AI needs:
 // a position for every ball on the table; the planning is src/ai's.
 #include <fmt/format.h>

@@ -1,5 +1,5 @@
 // Reading JSON input with precise errors: every value knows its JSON path, so a bad document
-// gives one line naming the field and what is wrong (cli-contract.md: exit 2).
+// gives one line naming the field and what is wrong (docs/cli.md: exit 2).
 #pragma once
 
 #include <cstdint>

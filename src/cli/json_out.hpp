@@ -1,4 +1,4 @@
-// Writing output documents (cli-contract.md): compact or indented, numbers that read back to
+// Writing output documents (docs/cli.md): compact or indented, numbers that read back to
 // the same double, -0 written as 0, and never a NaN or an infinity (an engine bug, exit 1).
 #pragma once
 

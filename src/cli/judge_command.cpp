@@ -1,4 +1,4 @@
-// `judge` (cli-contract.md): a game's state before a shot + the shot's events → the verdict and
+// `judge` (docs/cli.md): a game's state before a shot + the shot's events → the verdict and
 // the state before the next shot. Reading and writing live in rules_json; the rules in src/rules.
 #include <vector>
 

@@ -1,4 +1,4 @@
-// coolaaber-cli: the headless interface to the engine (cli-contract.md, docs/cli.md).
+// coolaaber-cli: the headless interface to the engine (docs/cli.md).
 //   coolaaber-cli simulate [FILE] [--pretty]
 //   coolaaber-cli judge [FILE] [--pretty]
 //   coolaaber-cli decide [FILE] [--pretty]

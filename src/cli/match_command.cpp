@@ -1,4 +1,4 @@
-// `match` (cli-contract.md): plays whole games headlessly between two players and reports the
+// `match` (docs/cli.md): plays whole games headlessly between two players and reports the
 // results; with --log, one JSON line per shot. The games are played by game::play_game.
 #include <fmt/format.h>
 

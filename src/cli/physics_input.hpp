@@ -1,5 +1,5 @@
 // Reading the physics parts of an input document (tables, parameters, models, balls, strokes)
-// with the checks of cli-contract.md: every bad value throws BadInput naming its JSON path.
+// with the checks of docs/cli.md: every bad value throws BadInput naming its JSON path.
 #pragma once
 
 #include <vector>

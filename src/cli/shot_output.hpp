@@ -1,4 +1,4 @@
-// Writing a simulated shot as the `simulate` output document (cli-contract.md).
+// Writing a simulated shot as the `simulate` output document (docs/cli.md).
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -1,5 +1,5 @@
 // `simulate`: reads a table, parameters, balls and an optional stroke, simulates the shot and
-// writes its events, final state and samples (cli-contract.md).
+// writes its events, final state and samples (docs/cli.md).
 #include <fmt/format.h>
 
 #include <optional>

@@ -14,7 +14,7 @@ namespace game {
 
 class Session;
 
-/// What a player does in one turn (the `decide` output of cli-contract.md).
+/// What a player does in one turn (the `decide` output of docs/cli.md).
 struct Decision {
     std::optional<rules::ChoiceOption> choice;  ///< when a choice is pending: the option taken
     std::optional<physics::Vec2> cue_pos;       ///< with ball in hand: where the cue ball goes

@@ -1,5 +1,5 @@
 // JSON of the rules' and the physics' values in a save file, in the schemas of the CLI contract
-// (cli-contract.md: the `judge` state and verdict, the `simulate` stroke and events). Readers
+// (docs/cli.md: the `judge` state and verdict, the `simulate` stroke and events). Readers
 // check every field against the game and the table and throw game::LoadError naming its path.
 #pragma once
 

@@ -9,7 +9,7 @@
 
 namespace physics {
 
-/// Motion states (physics-model.md). The closed form of the motion depends on it.
+/// Motion states (docs/physics.md). The closed form of the motion depends on it.
 enum class Motion : std::uint8_t { stationary, spinning, sliding, rolling, pocketed };
 
 std::string_view to_string(Motion m);

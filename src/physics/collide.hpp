@@ -6,7 +6,7 @@
 
 namespace physics::collide {
 
-// Chatter (physics-model.md, trap 3). Friction can keep two touching bodies accelerating into
+// Chatter (docs/physics.md, trap 3). Friction can keep two touching bodies accelerating into
 // each other (a spinning ball driving into another, or into a cushion); an event-based engine
 // then sees ever smaller bounces. Two rules keep the events per contact few:
 /// Approach speeds below this are perfectly inelastic and frictionless (unit: m/s).

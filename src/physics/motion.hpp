@@ -1,4 +1,4 @@
-// Closed-form motion of one ball between events (physics-model.md, "Motion between events").
+// Closed-form motion of one ball between events (docs/physics.md, "Motion between events").
 // Private to physics.
 #pragma once
 

@@ -1,4 +1,4 @@
-// All physical constants of the simulation, in one place, with their units (physics-model.md).
+// All physical constants of the simulation, in one place, with their units (docs/physics.md).
 #pragma once
 
 #include <cstddef>

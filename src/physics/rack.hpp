@@ -1,4 +1,4 @@
-// Racks per rules-spec.md: 8-ball triangle and 9-ball diamond, balls frozen together, seeded.
+// Racks per docs/rules.md: 8-ball triangle and 9-ball diamond, balls frozen together, seeded.
 #pragma once
 
 #include <cstdint>

@@ -1,4 +1,4 @@
-// The shot pipeline (physics-model.md): find the next event → advance the balls it involves to
+// The shot pipeline (docs/physics.md): find the next event → advance the balls it involves to
 // it → resolve it → record it → re-predict only what it changed. Between events every ball
 // follows its closed form, so nothing is stepped and nothing tunnels.
 #include "physics/simulate.hpp"

@@ -1,4 +1,4 @@
-// A cue stroke on the cue ball, as the shooter makes it (cli-contract.md, `strike`).
+// A cue stroke on the cue ball, as the shooter makes it (docs/cli.md, `strike`).
 #pragma once
 
 namespace physics {

@@ -1,5 +1,5 @@
 // Table geometry: the playing surface, cushions, pocket jaws and drop regions, built from a
-// specification (presets 7ft, 8ft, 9ft; WPA dimensions). Frame and names: cli-contract.md.
+// specification (presets 7ft, 8ft, 9ft; WPA dimensions). Frame and names: docs/cli.md.
 #pragma once
 
 #include <array>

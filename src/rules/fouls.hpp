@@ -1,4 +1,4 @@
-// Each foul of rules-spec.md as a small named predicate over the shot's facts and the state
+// Each foul of docs/rules.md as a small named predicate over the shot's facts and the state
 // before the shot. Which of them apply to a shot is the business of each game's rules.
 #pragma once
 

@@ -1,5 +1,5 @@
 // The state of a game before a shot: who shoots, what is on the table, what was called, and the
-// counters the rules carry from shot to shot (rules-spec.md; JSON schema in cli-contract.md).
+// counters the rules carry from shot to shot (docs/rules.md; JSON schema in docs/cli.md).
 #pragma once
 
 #include <array>

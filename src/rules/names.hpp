@@ -1,4 +1,4 @@
-// The names of the rules' enums as they appear in documents (cli-contract.md, rules-spec.md):
+// The names of the rules' enums as they appear in documents (docs/cli.md, docs/rules.md):
 // name(e) and parse<E>(text). Header-only, so save files and the CLI share one spelling.
 #pragma once
 

@@ -1,4 +1,4 @@
-// House-rule switches (rules-spec.md, "House-rule switches"); the defaults are WPA. Each
+// House-rule switches (docs/rules.md, "House-rule switches"); the defaults are WPA. Each
 // switch changes only what it names. They are 8-ball switches: 9-ball ignores them.
 #pragma once
 

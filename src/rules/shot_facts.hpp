@@ -1,5 +1,5 @@
 // What the rules need to know about a shot, distilled from its event log once, so that every
-// foul and every rule is a small predicate over these facts (style.md rule 4).
+// foul and every rule is a small predicate over these facts (docs/style.md rule 4).
 #pragma once
 
 #include <optional>

@@ -1,4 +1,4 @@
-// Spotting a ball (rules-spec.md, "Spotting"): on the foot spot; if that is occupied, on the
+// Spotting a ball (docs/rules.md, "Spotting"): on the foot spot; if that is occupied, on the
 // long string behind it (towards the foot cushion) as close to the spot as possible without
 // overlapping a ball.
 #pragma once

@@ -1,5 +1,5 @@
 // The few table dimensions the rules use: the head string (kitchen) and the foot spot and long
-// string (spotting). Frame: cli-contract.md (x from the head cushion to the foot cushion).
+// string (spotting). Frame: docs/cli.md (x from the head cushion to the foot cushion).
 #pragma once
 
 #include "physics/vec.hpp"

@@ -1,5 +1,5 @@
 // The rules' answer to one shot: the fouls, who shoots next and how, choices, the end of the
-// game, and the state before the next shot (cli-contract.md, `judge` output).
+// game, and the state before the next shot (docs/cli.md, `judge` output).
 #pragma once
 
 #include <optional>
@@ -24,10 +24,10 @@ enum class Foul {
 
 enum class BallInHand { none, anywhere, kitchen };
 
-/// The break requirement (rules-spec.md) on a break shot; `none` on any other shot.
+/// The break requirement (docs/rules.md) on a break shot; `none` on any other shot.
 enum class BreakResult { none, legal, illegal };
 
-/// The options a player may be offered (rules-spec.md names).
+/// The options a player may be offered (docs/rules.md names).
 enum class ChoiceOption {
     accept_table,                      ///< play the table as it lies
     rerack_and_break,                  ///< re-rack, the chooser breaks

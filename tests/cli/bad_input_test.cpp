@@ -1,5 +1,5 @@
 // Bad input to `simulate` and bad command lines: exit status 2, nothing on stdout, and exactly
-// one line on stderr, "error: <json path>: <message>" (cli-contract.md).
+// one line on stderr, "error: <json path>: <message>" (docs/cli.md).
 #include <gtest/gtest.h>
 
 #include <string>

@@ -1,4 +1,4 @@
-// `decide` (cli-contract.md): the AI's decision in a position — the output's fields, its
+// `decide` (docs/cli.md): the AI's decision in a position — the output's fields, its
 // determinism, calls, ball in hand, choices — and bad input (exit 2, one line naming the JSON
 // path, nothing on stdout). Also `match` with ai:LEVEL players.
 #include <gtest/gtest.h>

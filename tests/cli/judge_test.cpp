@@ -1,4 +1,4 @@
-// `judge` (cli-contract.md): valid documents, every kind of bad input with its JSON path, and
+// `judge` (docs/cli.md): valid documents, every kind of bad input with its JSON path, and
 // the binary's exit status and one-line error.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// `match` (cli-contract.md): the summary, determinism, the per-shot log, --duplicate, and bad
+// `match` (docs/cli.md): the summary, determinism, the per-shot log, --duplicate, and bad
 // command lines (exit 2, one line naming the option).
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // `simulate` on valid documents: the output's shape, samples, truncation, determinism, and
-// number formatting (cli-contract.md).
+// number formatting (docs/cli.md).
 #include <gtest/gtest.h>
 
 #include <algorithm>

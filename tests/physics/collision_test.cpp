@@ -26,7 +26,7 @@ Params with_e_ball(double e) {
 
 /// A cue ball that starts at the origin going +x and arrives, after sliding a distance D with
 /// its slip along +x the whole way, with speed vc and spin (0, wy, wz). While the slip points
-/// +x, v falls at μs·g and ω_y rises at 5·μs·g/(2R) (physics-model.md), so
+/// +x, v falls at μs·g and ω_y rises at 5·μs·g/(2R) (docs/physics.md), so
 /// v0 = √(vc² + 2·μs·g·D), t = (v0 − vc)/(μs·g) and ω_y0 = wy − 5·μs·g·t/(2R).
 /// Needs vc − R·wy > 0 (still sliding forward at contact) and |wz| > spin_decel·t or wz = 0.
 struct Arrival {

@@ -1,4 +1,4 @@
-// Determinism (style.md, rule 6): the same input gives bit-identical results, pinned by a
+// Determinism (docs/style.md, rule 6): the same input gives bit-identical results, pinned by a
 // golden hash of a seeded break.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Motion between events against the closed forms of physics-model.md: sliding (friction along
+// Motion between events against the closed forms of docs/physics.md: sliding (friction along
 // the slip), rolling, spin decay, draw, curving slides, and Shot::state_at.
 #include <gtest/gtest.h>
 

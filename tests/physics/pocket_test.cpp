@@ -1,5 +1,5 @@
 // Pockets: a ball played well drops; one that hits the jaw too far off rattles and stays out.
-// Racks per rules-spec.md.
+// Racks per docs/rules.md.
 #include <gtest/gtest.h>
 
 #include <algorithm>

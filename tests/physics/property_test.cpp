@@ -1,5 +1,5 @@
 // Property test: random layouts and strokes, with the engine's invariants checked after every
-// event (physics-model.md, "Things that break event-based engines").
+// event (docs/physics.md, "Things that break event-based engines").
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// The standard scenes (style.md, rule 8) are shared by the tests, `bench/` and `coolaaber-cli
+// The standard scenes (docs/style.md, rule 8) are shared by the tests, `bench/` and `coolaaber-cli
 // bench`: each must be the shot its name and the issue promise, or the benchmark figures
 // measure something else.
 #include "physics/scenes.hpp"

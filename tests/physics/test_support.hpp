@@ -1,6 +1,6 @@
 // Small shared helpers for the closed-form physics tests (motion, strike, ball–ball, cushion):
 // making balls and tables, running a shot, finding events, and the closed forms of
-// physics-model.md written out again, independently of src/physics/motion.cpp, so that the
+// docs/physics.md written out again, independently of src/physics/motion.cpp, so that the
 // engine is checked against the model and not against itself.
 #pragma once
 
@@ -157,7 +157,7 @@ inline double rel(double a, double b, double scale = 0.0) {
             << ")";                                                                             \
     } while (0)
 
-// ---- The closed forms of physics-model.md, "Motion between events" ----
+// ---- The closed forms of docs/physics.md, "Motion between events" ----
 
 /// Contact slip at the cloth, u = v + R·(ẑ × ω).
 inline Vec2 slip(const Params& p, Vec2 v, Vec3 w) {

@@ -1,4 +1,4 @@
-// The traps of event-based engines (physics-model.md): touching balls, simultaneous events,
+// The traps of event-based engines (docs/physics.md): touching balls, simultaneous events,
 // chatter, motion parallel to a rail.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// 8-ball (rules-spec.md "8-ball (WPA)" and its house-rule switches), one scenario per rule.
+// 8-ball (docs/rules.md "8-ball (WPA)" and its house-rule switches), one scenario per rule.
 #include "rules/eight_ball.hpp"
 
 #include "scenario.hpp"

@@ -1,4 +1,4 @@
-// 9-ball (rules-spec.md "9-ball (WPA)"), one scenario per rule.
+// 9-ball (docs/rules.md "9-ball (WPA)"), one scenario per rule.
 #include "scenario.hpp"
 
 namespace rules::test {

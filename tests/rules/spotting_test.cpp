@@ -1,4 +1,4 @@
-// Spotting on the foot spot and the long string (rules-spec.md "Spotting").
+// Spotting on the foot spot and the long string (docs/rules.md "Spotting").
 #include "rules/spotting.hpp"
 
 #include <gtest/gtest.h>
