@@ -103,7 +103,7 @@ bool is_side(int pocket) {
 // Every direct pot of `pos`, its four firm strokes each played with every draw.
 void play_pots(const ai::Position& pos, const Args& a, const std::vector<ai::NoiseDraw>& draws,
                std::vector<Row>& rows) {
-    ai::Effort effort = ai::effort_for_level(ai::max_level);
+    ai::Effort effort = ai::effort_for(pos.ruleset.game, ai::max_level);
     effort.speeds = 2;  // 1.3 and 2.1 × the speed that just gets the ball there
     effort.spins = 2;   // stun and follow
     std::int64_t simulations = 0;

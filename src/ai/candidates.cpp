@@ -40,7 +40,7 @@ constexpr double roll_decel = 0.0981;        // μ_roll·g of the default parame
 constexpr double arrival_speed = 0.35;       // object ball speed wanted at the pocket (unit: m/s)
 
 // The cue speed that gets the object ball of `aim` to its pocket with `arrival_speed`: sliding
-// costs a ball about 2/7 of its speed, rolling μ_roll·g per metre (physics-model.md).
+// costs a ball about 2/7 of its speed, rolling μ_roll·g per metre (docs/physics.md).
 double base_pot_speed(const physics::Params& params, const Aim& aim) {
     const double object0 =
         1.4 * std::sqrt(arrival_speed * arrival_speed + 2.0 * roll_decel * aim.object_distance);

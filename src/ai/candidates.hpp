@@ -23,8 +23,6 @@
 
 namespace ai {
 
-enum class Kind { pot, safety, kick, break_shot, push_out };
-
 struct Candidate {
     Kind kind = Kind::pot;
     physics::Stroke stroke;

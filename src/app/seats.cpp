@@ -4,7 +4,7 @@
 
 #include "game/random_player.hpp"
 #ifdef COOLAABER_HAVE_AI
-#include "ai/ai_player.hpp"
+#include "ai/ai.hpp"
 #endif
 
 namespace app {
