@@ -1,4 +1,4 @@
-// The offline tuning of the AI's break (candidates.hpp's `tuned_breaks`, docs/ai.md "Breaks"):
+// The offline tuning of the AI's break (candidates.hpp's `tuned_breaks`, docs/ai.md):
 // not a test, a measurement.
 //   break_tuning [--game 8ball|9ball] [--n N] [--draws D] [--seed S]
 // For N seeded racks, every break of a grid (the cue ball's spot across the table, full or off

@@ -1,5 +1,5 @@
 // How well the AI's analytic chance of a direct pot (src/ai/ghost_ball.hpp) predicts the engine
-// (docs/ai.md, "The shot model"): not a test, a measurement.
+// (docs/ai.md): not a test, a measurement.
 //   shot_calibration [--n N] [--seed S] [--noise X] [--layouts FILE] [--pockets all|side|corner]
 //                    [--dump FILE]
 // Layouts: N random ones (the cue ball and one object ball), and with --layouts every layout of

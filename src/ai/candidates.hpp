@@ -95,10 +95,10 @@ struct BreakSpec {
 };
 /// The break of `spec` in `pos`; empty when its spot is taken.
 std::optional<Candidate> break_candidate(const Position& pos, const BreakSpec& spec);
-/// The breaks level 5 chooses among in 9-ball, tuned offline (`break_tuning`, docs/ai.md "Breaks"):
-/// full on the apex ball from the middle or a little off it, hard. Of the spots, contacts and
-/// speeds measured, these leave the fewest balls with no path to a pocket and pocket the most, with
-/// no more scratches than the others.
+/// The breaks level 5 chooses among in 9-ball, tuned offline (bench/break_tuning.cpp): full on
+/// the apex ball from the middle or a little off it, hard. Of the spots, contacts and speeds
+/// that program plays, these leave the fewest balls with no path to a pocket and pocket the most,
+/// with no more scratches than the others. break_test.cpp.
 inline constexpr std::array<BreakSpec, 6> tuned_breaks{{{0.0, 0.0, 9.5},
                                                         {0.0, 0.0, 10.0},
                                                         {0.08, 0.0, 9.5},
