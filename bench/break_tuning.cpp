@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "ai/candidates.hpp"
-#include "ai/ghost_ball.hpp"
-#include "ai/position.hpp"
+#include "ai/internal/candidates.hpp"
+#include "ai/internal/ghost_ball.hpp"
+#include "ai/internal/position.hpp"
 #include "game/stroke_noise.hpp"
 #include "physics/rack.hpp"
 #include "physics/simulate.hpp"

@@ -19,11 +19,11 @@
 #include <string>
 #include <vector>
 
-#include "ai/candidates.hpp"
-#include "ai/evaluate.hpp"
-#include "ai/ghost_ball.hpp"
-#include "ai/level.hpp"
-#include "ai/position.hpp"
+#include "ai/internal/candidates.hpp"
+#include "ai/internal/evaluate.hpp"
+#include "ai/internal/ghost_ball.hpp"
+#include "ai/internal/level.hpp"
+#include "ai/internal/position.hpp"
 #include "physics/rack.hpp"
 #include "physics/simulate.hpp"
 #include "two_ball_layout.hpp"

@@ -1,7 +1,7 @@
 #include <algorithm>
 
 #include "ai/ai.hpp"
-#include "ai/level.hpp"
+#include "ai/internal/level.hpp"
 #include "physics/rack.hpp"
 
 namespace ai {

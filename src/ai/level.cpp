@@ -1,4 +1,4 @@
-#include "ai/level.hpp"
+#include "ai/internal/level.hpp"
 
 #include <algorithm>
 #include <array>

@@ -1,11 +1,11 @@
-#include "ai/placement.hpp"
+#include "ai/internal/placement.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <set>
 #include <utility>
 
-#include "ai/ghost_ball.hpp"
+#include "ai/internal/ghost_ball.hpp"
 
 namespace ai {
 

@@ -1,19 +1,19 @@
-#include "ai/planner.hpp"
+#include "ai/internal/planner.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <utility>
 
-#include "ai/candidates.hpp"
-#include "ai/evaluate.hpp"
-#include "ai/ghost_ball.hpp"
-#include "ai/heading_window.hpp"
-#include "ai/level.hpp"
-#include "ai/parallel.hpp"
-#include "ai/placement.hpp"
-#include "ai/selection.hpp"
-#include "ai/table_value.hpp"
+#include "ai/internal/candidates.hpp"
+#include "ai/internal/evaluate.hpp"
+#include "ai/internal/ghost_ball.hpp"
+#include "ai/internal/heading_window.hpp"
+#include "ai/internal/level.hpp"
+#include "ai/internal/parallel.hpp"
+#include "ai/internal/placement.hpp"
+#include "ai/internal/selection.hpp"
+#include "ai/internal/table_value.hpp"
 #include "rules/eight_ball.hpp"
 
 namespace ai {

@@ -5,9 +5,9 @@
 
 #include <cmath>
 
-#include "ai/candidates.hpp"
-#include "ai/level.hpp"
-#include "ai/planner.hpp"
+#include "ai/internal/candidates.hpp"
+#include "ai/internal/level.hpp"
+#include "ai/internal/planner.hpp"
 #include "ai_support.hpp"
 #include "physics/rack.hpp"
 

@@ -4,11 +4,11 @@
 // the 9 without noise, and level 5 wins a rack with one where a direct pot would not.
 #include <gtest/gtest.h>
 
-#include "ai/candidates.hpp"
-#include "ai/ghost_ball.hpp"
-#include "ai/level.hpp"
-#include "ai/placement.hpp"
-#include "ai/planner.hpp"
+#include "ai/internal/candidates.hpp"
+#include "ai/internal/ghost_ball.hpp"
+#include "ai/internal/level.hpp"
+#include "ai/internal/placement.hpp"
+#include "ai/internal/planner.hpp"
 #include "ai_support.hpp"
 
 namespace {

@@ -9,9 +9,9 @@
 #include <cmath>
 #include <vector>
 
-#include "ai/candidates.hpp"
-#include "ai/evaluate.hpp"
-#include "ai/level.hpp"
+#include "ai/internal/candidates.hpp"
+#include "ai/internal/evaluate.hpp"
+#include "ai/internal/level.hpp"
 #include "ai_support.hpp"
 
 namespace {

@@ -1,6 +1,6 @@
 // Kicks and banks that pot without noise, moved to the middle of their window of headings
 // (ai::heading_window, ai::centred_kicks).
-#include "ai/heading_window.hpp"
+#include "ai/internal/heading_window.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,10 +8,10 @@
 #include <cmath>
 #include <optional>
 
-#include "ai/candidates.hpp"
-#include "ai/evaluate.hpp"
-#include "ai/ghost_ball.hpp"
-#include "ai/level.hpp"
+#include "ai/internal/candidates.hpp"
+#include "ai/internal/evaluate.hpp"
+#include "ai/internal/ghost_ball.hpp"
+#include "ai/internal/level.hpp"
 #include "ai_support.hpp"
 
 namespace {

@@ -2,7 +2,7 @@
 // The search grows with the level, each game's own knobs are off in the other game, every entry
 // searches something, and levels out of range are clamped to 1–5. How the entries differ between
 // the games and at the end of a rack: rack_end_test.cpp.
-#include "ai/level.hpp"
+#include "ai/internal/level.hpp"
 
 #include <gtest/gtest.h>
 

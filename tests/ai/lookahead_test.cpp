@@ -2,15 +2,15 @@
 // table with nothing on is worth exactly a safety, a sure game-winning pot nearly a win, a long
 // one less; played out over more shots it sees the win or the dead end a pot leads to; variants
 // stay near the pot they come from and inside the miscue limit.
-#include "ai/lookahead.hpp"
+#include "ai/internal/lookahead.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "ai/candidates.hpp"
-#include "ai/level.hpp"
-#include "ai/table_value.hpp"
+#include "ai/internal/candidates.hpp"
+#include "ai/internal/level.hpp"
+#include "ai/internal/table_value.hpp"
 #include "ai_support.hpp"
 
 namespace {

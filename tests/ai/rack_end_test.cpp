@@ -3,8 +3,8 @@
 // lower levels, the effort is the level's own. And 9-ball's level 5, deeper in every decision.
 #include <gtest/gtest.h>
 
-#include "ai/level.hpp"
-#include "ai/table_value.hpp"
+#include "ai/internal/level.hpp"
+#include "ai/internal/table_value.hpp"
 #include "ai_support.hpp"
 
 namespace {

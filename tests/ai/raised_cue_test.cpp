@@ -5,10 +5,10 @@
 #include <cmath>
 #include <optional>
 
-#include "ai/aim.hpp"
-#include "ai/candidates.hpp"
-#include "ai/ghost_ball.hpp"
-#include "ai/level.hpp"
+#include "ai/internal/aim.hpp"
+#include "ai/internal/candidates.hpp"
+#include "ai/internal/ghost_ball.hpp"
+#include "ai/internal/level.hpp"
 #include "ai_support.hpp"
 #include "game/stroke_noise.hpp"
 

@@ -1,14 +1,14 @@
 // Choosing the candidates for the next round (selection.hpp), and the leave it keys on: the ball
 // of the next pot that a noiseless stroke leaves (Evaluator::nominal with_leave).
-#include "ai/selection.hpp"
+#include "ai/internal/selection.hpp"
 
 #include <gtest/gtest.h>
 
 #include <vector>
 
-#include "ai/candidates.hpp"
-#include "ai/evaluate.hpp"
-#include "ai/level.hpp"
+#include "ai/internal/candidates.hpp"
+#include "ai/internal/evaluate.hpp"
+#include "ai/internal/level.hpp"
 #include "ai_support.hpp"
 
 namespace {

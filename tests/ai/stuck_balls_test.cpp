@@ -5,9 +5,9 @@
 
 #include <vector>
 
-#include "ai/level.hpp"
-#include "ai/lookahead.hpp"
-#include "ai/table_value.hpp"
+#include "ai/internal/level.hpp"
+#include "ai/internal/lookahead.hpp"
+#include "ai/internal/table_value.hpp"
 #include "ai_support.hpp"
 
 namespace {

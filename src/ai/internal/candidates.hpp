@@ -15,9 +15,10 @@
 #include <optional>
 #include <vector>
 
-#include "ai/ghost_ball.hpp"
-#include "ai/level.hpp"
-#include "ai/position.hpp"
+#include "ai/internal/ghost_ball.hpp"
+#include "ai/internal/level.hpp"
+#include "ai/internal/position.hpp"
+#include "ai/internal/private.hpp"
 #include "physics/stroke.hpp"
 #include "rules/game_state.hpp"
 

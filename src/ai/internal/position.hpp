@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "ai/ai.hpp"
+#include "ai/internal/private.hpp"
 #include "physics/ball_state.hpp"
 #include "rules/game_state.hpp"
 

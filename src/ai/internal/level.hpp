@@ -5,6 +5,7 @@
 #pragma once
 
 #include "ai/ai.hpp"
+#include "ai/internal/private.hpp"
 #include "rules/game_state.hpp"
 
 namespace ai {

@@ -15,8 +15,9 @@
 #include <optional>
 #include <vector>
 
-#include "ai/candidates.hpp"
-#include "ai/evaluate.hpp"
+#include "ai/internal/candidates.hpp"
+#include "ai/internal/evaluate.hpp"
+#include "ai/internal/private.hpp"
 
 namespace ai {
 

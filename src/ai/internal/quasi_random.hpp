@@ -9,6 +9,8 @@
 
 #include <cstdint>
 
+#include "ai/internal/private.hpp"
+
 namespace ai {
 
 /// The radical inverse of `i` in `base` (≥ 2): its base-`base` digits mirrored about the point,

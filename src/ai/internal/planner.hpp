@@ -13,7 +13,8 @@
 #pragma once
 
 #include "ai/ai.hpp"
-#include "ai/level.hpp"
+#include "ai/internal/level.hpp"
+#include "ai/internal/private.hpp"
 #include "physics/params.hpp"
 
 namespace ai {
