@@ -10,8 +10,8 @@ namespace {
 // Every knob of every level, one block per level, in the order of level.hpp's Effort: the
 // candidates; the rounds under noise; the deep search; the value of a table. Levels 1–4 are the
 // same in both games; level 5 has an effort per game and, in 8-ball, one near the rack's end.
-// The decisions these give are pinned by decisions_test.cpp and whole_games_test.cpp, the
-// relations between them by level_test.cpp.
+// level_test.cpp and rack_end_test.cpp pin the relations between the entries; any change of a
+// value changes decisions, which a `coolaaber-cli match --log` before and after shows.
 // clang-format off
 constexpr std::array<Effort, 5> eight_ball{{
     {.pot_pairs = 3, .speeds = 2, .spins = 1, .refine_steps = 2, .max_raise_deg = 0.0,
