@@ -19,10 +19,10 @@
 #include <string>
 #include <vector>
 
-#include "ai/ghost_ball.hpp"
-#include "ai/planner.hpp"
-#include "ai/position.hpp"
-#include "ai/table_value.hpp"
+#include "ai/internal/ghost_ball.hpp"
+#include "ai/internal/planner.hpp"
+#include "ai/internal/position.hpp"
+#include "ai/internal/table_value.hpp"
 #include "game/stroke_noise.hpp"
 #include "physics/rack.hpp"
 #include "physics/simulate.hpp"

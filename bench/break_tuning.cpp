@@ -1,4 +1,4 @@
-// The offline tuning of the AI's break (candidates.hpp's `tuned_breaks`, docs/ai.md "Breaks"):
+// The offline tuning of the AI's break (candidates.hpp's `tuned_breaks`, docs/ai.md):
 // not a test, a measurement.
 //   break_tuning [--game 8ball|9ball] [--n N] [--draws D] [--seed S]
 // For N seeded racks, every break of a grid (the cue ball's spot across the table, full or off
@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "ai/candidates.hpp"
-#include "ai/ghost_ball.hpp"
-#include "ai/position.hpp"
+#include "ai/internal/candidates.hpp"
+#include "ai/internal/ghost_ball.hpp"
+#include "ai/internal/position.hpp"
 #include "game/stroke_noise.hpp"
 #include "physics/rack.hpp"
 #include "physics/simulate.hpp"

@@ -1,5 +1,5 @@
 // How well the AI's analytic chance of a direct pot (src/ai/ghost_ball.hpp) predicts the engine
-// (docs/ai.md, "The shot model"): not a test, a measurement.
+// (docs/ai.md): not a test, a measurement.
 //   shot_calibration [--n N] [--seed S] [--noise X] [--layouts FILE] [--pockets all|side|corner]
 //                    [--dump FILE]
 // Layouts: N random ones (the cue ball and one object ball), and with --layouts every layout of
@@ -19,11 +19,11 @@
 #include <string>
 #include <vector>
 
-#include "ai/candidates.hpp"
-#include "ai/evaluate.hpp"
-#include "ai/ghost_ball.hpp"
-#include "ai/level.hpp"
-#include "ai/position.hpp"
+#include "ai/internal/candidates.hpp"
+#include "ai/internal/evaluate.hpp"
+#include "ai/internal/ghost_ball.hpp"
+#include "ai/internal/level.hpp"
+#include "ai/internal/position.hpp"
 #include "physics/rack.hpp"
 #include "physics/simulate.hpp"
 #include "two_ball_layout.hpp"
@@ -103,7 +103,7 @@ bool is_side(int pocket) {
 // Every direct pot of `pos`, its four firm strokes each played with every draw.
 void play_pots(const ai::Position& pos, const Args& a, const std::vector<ai::NoiseDraw>& draws,
                std::vector<Row>& rows) {
-    ai::Effort effort = ai::effort_for_level(ai::max_level);
+    ai::Effort effort = ai::effort_for(pos.ruleset.game, ai::max_level);
     effort.speeds = 2;  // 1.3 and 2.1 × the speed that just gets the ball there
     effort.spins = 2;   // stun and follow
     std::int64_t simulations = 0;

@@ -1,9 +1,7 @@
-#include "ai/ai_player.hpp"
-
 #include <algorithm>
 
-#include "ai/level.hpp"
-#include "ai/position.hpp"
+#include "ai/ai.hpp"
+#include "ai/internal/level.hpp"
 #include "physics/rack.hpp"
 
 namespace ai {
@@ -18,7 +16,7 @@ AiPlayer::AiPlayer(int level, std::uint64_t seed, double noise, int workers)
     : settings_{std::clamp(level, min_level, max_level), noise, workers}, seed_(seed) {}
 
 double AiPlayer::execution_noise() const {
-    return effort_for_level(settings_.level).noise_multiplier;
+    return noise_multiplier(settings_.level);
 }
 
 game::Decision AiPlayer::decide(const game::Session& session) {

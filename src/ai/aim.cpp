@@ -1,4 +1,4 @@
-#include "ai/aim.hpp"
+#include "ai/internal/aim.hpp"
 
 #include <algorithm>
 #include <array>

@@ -1,11 +1,11 @@
-#include "ai/candidates.hpp"
+#include "ai/internal/candidates.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 
-#include "ai/aim.hpp"
-#include "ai/ghost_ball.hpp"
+#include "ai/internal/aim.hpp"
+#include "ai/internal/ghost_ball.hpp"
 #include "physics/cue_strike.hpp"
 #include "rules/eight_ball.hpp"
 

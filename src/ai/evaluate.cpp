@@ -1,14 +1,14 @@
-#include "ai/evaluate.hpp"
+#include "ai/internal/evaluate.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 
-#include "ai/ghost_ball.hpp"
-#include "ai/lookahead.hpp"
-#include "ai/parallel.hpp"
-#include "ai/quasi_random.hpp"
-#include "ai/table_value.hpp"
+#include "ai/internal/ghost_ball.hpp"
+#include "ai/internal/lookahead.hpp"
+#include "ai/internal/parallel.hpp"
+#include "ai/internal/quasi_random.hpp"
+#include "ai/internal/table_value.hpp"
 #include "game/session.hpp"
 #include "game/stroke_noise.hpp"
 #include "physics/simulate.hpp"

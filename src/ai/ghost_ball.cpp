@@ -1,4 +1,4 @@
-#include "ai/ghost_ball.hpp"
+#include "ai/internal/ghost_ball.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,10 +1,10 @@
-#include "ai/heading_window.hpp"
+#include "ai/internal/heading_window.hpp"
 
 #include <algorithm>
 #include <numeric>
 
-#include "ai/aim.hpp"
-#include "ai/parallel.hpp"
+#include "ai/internal/aim.hpp"
+#include "ai/internal/parallel.hpp"
 #include "game/session.hpp"
 
 namespace ai {

@@ -1,12 +1,12 @@
-#include "ai/lookahead.hpp"
+#include "ai/internal/lookahead.hpp"
 
 #include <algorithm>
 #include <optional>
 #include <vector>
 
-#include "ai/candidates.hpp"
-#include "ai/evaluate.hpp"
-#include "ai/table_value.hpp"
+#include "ai/internal/candidates.hpp"
+#include "ai/internal/evaluate.hpp"
+#include "ai/internal/table_value.hpp"
 
 namespace ai {
 

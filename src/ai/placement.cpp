@@ -1,11 +1,11 @@
-#include "ai/placement.hpp"
+#include "ai/internal/placement.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <set>
 #include <utility>
 
-#include "ai/ghost_ball.hpp"
+#include "ai/internal/ghost_ball.hpp"
 
 namespace ai {
 
@@ -23,30 +23,32 @@ Vec2 rotate(Vec2 v, double a) {
     return {v.x * std::cos(a) - v.y * std::sin(a), v.x * std::sin(a) + v.y * std::cos(a)};
 }
 
-}  // namespace
-
-std::vector<Vec2> cue_spots(const Position& pos, int count, double sigma_deg) {
+// The free spot `p` scored by its best direct pot: the analytic chance, a little more for a
+// slight cut, which lets the cue ball go on to the next shot.
+Spot scored(const Position& pos, Vec2 p, double sigma_deg) {
     const double R = pos.params.ball_radius;
-    const double L = pos.table.length(), W = pos.table.width();
-    const bool kitchen = pos.state.cue_ball == rules::CueBall::in_hand_kitchen;
-    std::vector<Spot> spots;
-    auto consider = [&](Vec2 p) {
-        if (!free_spot(pos, p)) return;
-        double best = 0.0;
-        int pair = -1;
-        for (int ball : target_balls(pos.ruleset, pos.state))
-            for (int pocket = 0; pocket < 6; ++pocket)
-                if (std::optional<Aim> a =
-                        direct_aim(pos.table, R, p, ball, pocket, pos.state.positions)) {
-                    // A slight cut lets the cue ball go on to the next shot.
-                    const double bias = a->cut_deg > 8.0 && a->cut_deg < 35.0 ? 0.02 : 0.0;
-                    const double q = aim_chance(*a, R, sigma_deg) + bias;
-                    if (q > best) {
-                        best = q;
-                        pair = ball * 6 + pocket;
-                    }
+    Spot spot{p, 0.0, -1};
+    for (int ball : target_balls(pos.ruleset, pos.state))
+        for (int pocket = 0; pocket < 6; ++pocket)
+            if (std::optional<Aim> a =
+                    direct_aim(pos.table, R, p, ball, pocket, pos.state.positions)) {
+                const double bias = a->cut_deg > 8.0 && a->cut_deg < 35.0 ? 0.02 : 0.0;
+                const double q = aim_chance(*a, R, sigma_deg) + bias;
+                if (q > spot.score) {
+                    spot.score = q;
+                    spot.pair = ball * 6 + pocket;
                 }
-        spots.push_back({p, best, pair});
+            }
+    return spot;
+}
+
+// The free spots behind each pottable ball on the line from its pocket, and in the kitchen on a
+// grid when the ball in hand is there, scored, the best first.
+std::vector<Spot> ranked_spots(const Position& pos, double sigma_deg) {
+    const double R = pos.params.ball_radius;
+    std::vector<Spot> spots;
+    const auto consider = [&](Vec2 p) {
+        if (free_spot(pos, p)) spots.push_back(scored(pos, p, sigma_deg));
     };
     for (int ball : target_balls(pos.ruleset, pos.state))
         for (int pocket = 0; pocket < 6; ++pocket) {
@@ -57,7 +59,8 @@ std::vector<Vec2> cue_spots(const Position& pos, int count, double sigma_deg) {
                 for (double turn : {0.0, 0.35, -0.35, 0.7, -0.7})
                     consider(path->ghost + d * rotate(back, turn));
         }
-    if (kitchen) {
+    if (pos.state.cue_ball == rules::CueBall::in_hand_kitchen) {
+        const double W = pos.table.width();
         const double x_max = pos.ruleset.table.head_string_x() - R;
         for (int i = 0; i < 4; ++i)
             for (int j = 0; j < 7; ++j)
@@ -66,19 +69,29 @@ std::vector<Vec2> cue_spots(const Position& pos, int count, double sigma_deg) {
     }
     std::stable_sort(spots.begin(), spots.end(),
                      [](const Spot& a, const Spot& b) { return a.score > b.score; });
+    return spots;
+}
 
+// Up to `count` of the ranked `spots` with a pot on: one per shot first, then the rest.
+std::vector<Vec2> best_spots(const std::vector<Spot>& spots, int count) {
     std::vector<Vec2> out;
     std::set<int> pairs;
-    for (const Spot& s : spots)  // one spot per shot first
+    for (const Spot& s : spots)
         if (s.score > 0.0 && static_cast<int>(out.size()) < count && pairs.insert(s.pair).second)
             out.push_back(s.pos);
     for (const Spot& s : spots)
         if (s.score > 0.0 && static_cast<int>(out.size()) < count &&
             std::find(out.begin(), out.end(), s.pos) == out.end())
             out.push_back(s.pos);
-    if (!out.empty()) return out;
+    return out;
+}
 
-    // Nothing to pot: near a legal ball, for a safety.
+// Nothing to pot: spots near a legal ball, for a safety; else the ranked `spots` in the kitchen;
+// at worst the first free spot of a scan of the table.
+std::vector<Vec2> safety_spots(const Position& pos, const std::vector<Spot>& spots, int count) {
+    const double R = pos.params.ball_radius;
+    const double L = pos.table.length(), W = pos.table.width();
+    std::vector<Vec2> out;
     for (int ball : target_balls(pos.ruleset, pos.state)) {
         auto it = pos.state.positions.find(ball);
         if (it == pos.state.positions.end()) continue;
@@ -87,7 +100,7 @@ std::vector<Vec2> cue_spots(const Position& pos, int count, double sigma_deg) {
             if (free_spot(pos, p)) out.push_back(p);
         }
     }
-    if (kitchen && out.empty())
+    if (pos.state.cue_ball == rules::CueBall::in_hand_kitchen && out.empty())
         for (const Spot& s : spots) {
             out.push_back(s.pos);
             if (static_cast<int>(out.size()) >= count) break;
@@ -99,6 +112,15 @@ std::vector<Vec2> cue_spots(const Position& pos, int count, double sigma_deg) {
                 break;
             }
     return out;
+}
+
+}  // namespace
+
+std::vector<Vec2> cue_spots(const Position& pos, int count, double sigma_deg) {
+    const std::vector<Spot> spots = ranked_spots(pos, sigma_deg);
+    std::vector<Vec2> out = best_spots(spots, count);
+    if (!out.empty()) return out;
+    return safety_spots(pos, spots, count);
 }
 
 std::vector<Vec2> combination_spots(const Position& pos, int count, double sigma_deg,

@@ -1,4 +1,4 @@
-#include "ai/position.hpp"
+#include "ai/internal/position.hpp"
 
 #include "game/session.hpp"
 #include "physics/layout.hpp"

@@ -1,4 +1,4 @@
-#include "ai/quasi_random.hpp"
+#include "ai/internal/quasi_random.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "ai/selection.hpp"
+#include "ai/internal/selection.hpp"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "ai/table_value.hpp"
+#include "ai/internal/table_value.hpp"
 
 #include <algorithm>
 #include <array>

@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "ai/ai_player.hpp"
+#include "ai/ai.hpp"
 #include "game/random_player.hpp"
 
 namespace app {

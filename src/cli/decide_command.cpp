@@ -7,8 +7,7 @@
 #include <cstdint>
 #include <set>
 
-#include "ai/planner.hpp"
-#include "ai/position.hpp"
+#include "ai/ai.hpp"
 #include "cli/commands.hpp"
 #include "cli/json_in.hpp"
 #include "cli/json_out.hpp"

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "ai/ai_player.hpp"
+#include "ai/ai.hpp"
 #include "cli/commands.hpp"
 #include "cli/json_in.hpp"
 #include "cli/json_out.hpp"

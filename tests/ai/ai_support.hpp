@@ -4,7 +4,7 @@
 #include <map>
 #include <set>
 
-#include "ai/position.hpp"
+#include "ai/internal/position.hpp"
 #include "game/player.hpp"
 #include "physics/shot.hpp"
 #include "physics/simulate.hpp"

@@ -5,9 +5,9 @@
 
 #include <cmath>
 
-#include "ai/candidates.hpp"
-#include "ai/level.hpp"
-#include "ai/planner.hpp"
+#include "ai/internal/candidates.hpp"
+#include "ai/internal/level.hpp"
+#include "ai/internal/planner.hpp"
 #include "ai_support.hpp"
 #include "physics/rack.hpp"
 
@@ -103,14 +103,14 @@ bool breaks_with_one_of(const ai::Position& pos, int level, bool tuned) {
 TEST(Breaks, LevelFiveBreaksWithATunedBreakInNineBallTheOthersWithTheBroadSet) {
     const ai::Position nine = racked(Game::nine_ball, 9);
     EXPECT_TRUE(breaks_with_one_of(nine, ai::max_level, true));
-    EXPECT_TRUE(ai::effort_for_level(ai::max_level).tuned_breaks);
+    EXPECT_TRUE(ai::effort_for(Game::nine_ball, ai::max_level).tuned_breaks);
     for (int level = ai::min_level; level < ai::max_level; ++level) {
-        EXPECT_FALSE(ai::effort_for_level(level).tuned_breaks) << "level " << level;
+        EXPECT_FALSE(ai::effort_for(Game::nine_ball, level).tuned_breaks) << "level " << level;
         EXPECT_TRUE(breaks_with_one_of(nine, level, false)) << "level " << level;
     }
     // 8-ball: the broad set at every level.
     const ai::Position eight = racked(Game::eight_ball, 9);
-    EXPECT_FALSE(ai::for_game(ai::effort_for_level(ai::max_level), Game::eight_ball).tuned_breaks);
+    EXPECT_FALSE(ai::effort_for(Game::eight_ball, ai::max_level).tuned_breaks);
     EXPECT_TRUE(breaks_with_one_of(eight, ai::max_level, false));
     EXPECT_EQ(ai::break_candidates(eight, false).size(), ai::broad_breaks().size());
 }

@@ -4,11 +4,11 @@
 // the 9 without noise, and level 5 wins a rack with one where a direct pot would not.
 #include <gtest/gtest.h>
 
-#include "ai/candidates.hpp"
-#include "ai/ghost_ball.hpp"
-#include "ai/level.hpp"
-#include "ai/placement.hpp"
-#include "ai/planner.hpp"
+#include "ai/internal/candidates.hpp"
+#include "ai/internal/ghost_ball.hpp"
+#include "ai/internal/level.hpp"
+#include "ai/internal/placement.hpp"
+#include "ai/internal/planner.hpp"
 #include "ai_support.hpp"
 
 namespace {
@@ -73,7 +73,7 @@ TEST(CombinationCandidates, TheRefinedStrokesPotTheNineWithoutNoise) {
         ai::ranked_combinations(pos, pos.state.positions.at(0), sigma);
     ASSERT_FALSE(ranked.empty());
     EXPECT_EQ(ranked.front().combination.second.pocket, SW);
-    const ai::Effort effort = ai::effort_for_level(ai::max_level);
+    const ai::Effort effort = ai::effort_for(Game::nine_ball, ai::max_level);
     std::int64_t sims = 0;
     const std::vector<ai::Candidate> strokes =
         ai::combination_candidates(pos, pos.state.positions.at(0), false, effort, sigma, sims);
@@ -101,12 +101,13 @@ TEST(CombinationCandidates, NoneInEightBallOrWhenTheNineIsTheLowest) {
     ai::Position nine = position(Game::nine_ball, {9}, {{0, {0.95, 0.95}}, {9, {0.25, 0.25}}});
     EXPECT_TRUE(ai::ranked_combinations(nine, {0.95, 0.95}, sigma).empty());
     // Levels below 5 try none, nor level 5 in 8-ball.
-    EXPECT_EQ(ai::for_game(ai::effort_for_level(ai::max_level), Game::eight_ball).combinations, 0);
+    EXPECT_EQ(ai::effort_for(Game::eight_ball, ai::max_level).combinations, 0);
+    EXPECT_EQ(ai::effort_for(Game::eight_ball, ai::max_level, true).combinations, 0);
     std::int64_t sims = 0;
     const ai::Position pos = straight_combination();
-    EXPECT_TRUE(
-        ai::combination_candidates(pos, {0.95, 0.95}, false, ai::effort_for_level(4), sigma, sims)
-            .empty());
+    EXPECT_TRUE(ai::combination_candidates(pos, {0.95, 0.95}, false,
+                                           ai::effort_for(Game::nine_ball, 4), sigma, sims)
+                    .empty());
 }
 
 TEST(CombinationSpots, BallInHandFindsASpotForTheCombination) {

@@ -5,8 +5,8 @@
 
 #include <cstring>
 
-#include "ai/planner.hpp"
-#include "ai/table_value.hpp"
+#include "ai/internal/planner.hpp"
+#include "ai/internal/table_value.hpp"
 #include "ai_support.hpp"
 
 namespace {

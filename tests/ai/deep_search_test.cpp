@@ -9,9 +9,9 @@
 #include <cmath>
 #include <vector>
 
-#include "ai/candidates.hpp"
-#include "ai/evaluate.hpp"
-#include "ai/level.hpp"
+#include "ai/internal/candidates.hpp"
+#include "ai/internal/evaluate.hpp"
+#include "ai/internal/level.hpp"
 #include "ai_support.hpp"
 
 namespace {
@@ -33,7 +33,7 @@ ai::Position one_then_nine() {
 
 struct Fixture {
     ai::Position pos = one_then_nine();
-    ai::Effort effort = ai::nine_ball_effort(ai::max_level);
+    ai::Effort effort = ai::effort_for(Game::nine_ball, ai::max_level);
     ai::Evaluator eval{pos, 1.0, sigma};
     std::vector<ai::NoiseDraw> draws = ai::noise_draws(7, 16);
     std::vector<ai::Candidate> cands;
@@ -106,7 +106,7 @@ TEST(ScoreDeep, WithoutNoiseOnePlayIsExact) {
 }
 
 TEST(DeepHalvings, PlayAsManyTrialsAsOneRoundAndGiveTheBestQuarterTwiceTheDraws) {
-    ai::Effort e = ai::nine_ball_effort(ai::max_level);
+    ai::Effort e = ai::effort_for(Game::nine_ball, ai::max_level);
     ASSERT_EQ(e.deep_halvings, 2);
     const int f = e.deep_finalists, m = e.deep_samples;
     // Every deep finalist m / 2 draws, the better half up to m, the better quarter up to 2 m.
@@ -118,29 +118,26 @@ TEST(DeepHalvings, PlayAsManyTrialsAsOneRoundAndGiveTheBestQuarterTwiceTheDraws)
     e.deep_halvings = 3;
     EXPECT_EQ(ai::deepest_draws(e), 4 * m);
     for (int level = ai::min_level; level < ai::max_level; ++level)
-        EXPECT_EQ(ai::nine_ball_effort(level).deep_halvings, 0) << "level " << level;
-    EXPECT_EQ(ai::effort_for_level(ai::max_level).deep_halvings, 0);  // 8-ball: one round
+        EXPECT_EQ(ai::effort_for(Game::nine_ball, level).deep_halvings, 0) << "level " << level;
+    for (bool rack_end : {false, true})  // 8-ball: one round
+        EXPECT_EQ(ai::effort_for(Game::eight_ball, ai::max_level, rack_end).deep_halvings, 0);
 }
 
 TEST(DeepDraws, LevelFiveIn9BallPlaysDrawsOfItsOwnAfterTheOnePlyRounds) {
-    for (const ai::Effort& e :
-         {ai::effort_for_level(ai::max_level), ai::nine_ball_effort(ai::max_level)}) {
-        EXPECT_TRUE(e.fresh_deep_draws);
-        EXPECT_EQ(ai::draw_pool(e), (1 + e.finalist_rounds) * e.samples + ai::deepest_draws(e));
-    }
-    // 8-ball, the end of the rack included: among the one-ply draws, as before stop 23.
-    for (const ai::Effort& e :
-         {ai::effort_for_level(ai::max_level), ai::rack_end_effort(ai::max_level)}) {
-        const ai::Effort eight = ai::for_game(e, Game::eight_ball);
+    const ai::Effort nine = ai::effort_for(Game::nine_ball, ai::max_level);
+    EXPECT_TRUE(nine.fresh_deep_draws);
+    EXPECT_EQ(ai::draw_pool(nine),
+              (1 + nine.finalist_rounds) * nine.samples + ai::deepest_draws(nine));
+    // 8-ball, the end of the rack included, and levels 1-4: among the one-ply draws.
+    for (bool rack_end : {false, true}) {
+        const ai::Effort eight = ai::effort_for(Game::eight_ball, ai::max_level, rack_end);
         EXPECT_FALSE(eight.fresh_deep_draws);
         EXPECT_EQ(ai::draw_pool(eight),
                   std::max({(1 + eight.finalist_rounds) * eight.samples, 2 * eight.break_samples,
                             ai::deepest_draws(eight)}));
     }
-    EXPECT_TRUE(
-        ai::for_game(ai::nine_ball_effort(ai::max_level), Game::nine_ball).fresh_deep_draws);
-    for (int level = ai::min_level; level < ai::max_level; ++level) {  // as before stop 23
-        const ai::Effort e = ai::effort_for_level(level);
+    for (int level = ai::min_level; level < ai::max_level; ++level) {
+        const ai::Effort e = ai::effort_for(Game::nine_ball, level);
         EXPECT_FALSE(e.fresh_deep_draws) << "level " << level;
         EXPECT_EQ(ai::draw_pool(e),
                   std::max({2 * e.samples, 2 * e.break_samples, ai::deepest_draws(e)}));
@@ -148,19 +145,17 @@ TEST(DeepDraws, LevelFiveIn9BallPlaysDrawsOfItsOwnAfterTheOnePlyRounds) {
 }
 
 // 8-ball, level 5: the finalists get three rounds of draws more, not one (160 draws each in
-// all); 9-ball and levels 1-4 one round, as before stop 37.
+// all); 9-ball and levels 1-4 one round.
 TEST(FinalistDraws, ThreeMoreRoundsIn8BallAtLevelFiveOnly) {
-    for (const ai::Effort& e :
-         {ai::effort_for_level(ai::max_level), ai::rack_end_effort(ai::max_level)}) {
-        const ai::Effort eight = ai::for_game(e, Game::eight_ball);
+    for (bool rack_end : {false, true}) {
+        const ai::Effort eight = ai::effort_for(Game::eight_ball, ai::max_level, rack_end);
         EXPECT_EQ(eight.finalist_rounds, 3);
         EXPECT_EQ(ai::draw_pool(eight), 4 * eight.samples);
     }
-    EXPECT_EQ(ai::nine_ball_effort(ai::max_level).finalist_rounds, 1);
-    EXPECT_EQ(ai::for_game(ai::effort_for_level(ai::max_level), Game::nine_ball).finalist_rounds,
-              1);
+    EXPECT_EQ(ai::effort_for(Game::nine_ball, ai::max_level).finalist_rounds, 1);
     for (int level = ai::min_level; level < ai::max_level; ++level)
-        EXPECT_EQ(ai::effort_for_level(level).finalist_rounds, 1) << "level " << level;
+        for (Game game : {Game::eight_ball, Game::nine_ball})
+            EXPECT_EQ(ai::effort_for(game, level).finalist_rounds, 1) << "level " << level;
 }
 
 TEST(DeepDraws, OwnDrawsExtendTheOnePlyMeanByEachOfThem) {

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "ai/ghost_ball.hpp"
+#include "ai/internal/ghost_ball.hpp"
 #include "game/stroke_noise.hpp"
 #include "physics/cue_strike.hpp"
 

@@ -1,6 +1,6 @@
 // Kicks and banks that pot without noise, moved to the middle of their window of headings
 // (ai::heading_window, ai::centred_kicks).
-#include "ai/heading_window.hpp"
+#include "ai/internal/heading_window.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,10 +8,10 @@
 #include <cmath>
 #include <optional>
 
-#include "ai/candidates.hpp"
-#include "ai/evaluate.hpp"
-#include "ai/ghost_ball.hpp"
-#include "ai/level.hpp"
+#include "ai/internal/candidates.hpp"
+#include "ai/internal/evaluate.hpp"
+#include "ai/internal/ghost_ball.hpp"
+#include "ai/internal/level.hpp"
 #include "ai_support.hpp"
 
 namespace {
@@ -30,7 +30,8 @@ struct Sweep {
 
 Sweep sweep(const ai::Position& pos, const ai::Evaluator& eval) {
     Sweep s;
-    s.kicks = ai::kick_candidates(pos, pos.state.positions.at(0), false, ai::effort_for_level(5));
+    s.kicks = ai::kick_candidates(pos, pos.state.positions.at(0), false,
+                                  ai::effort_for(rules::Game::nine_ball, 5));
     for (ai::Candidate& c : s.kicks) {
         const ai::Trial t = eval.nominal(c);
         ai::Score score;
@@ -120,7 +121,7 @@ TEST(KickWindow, RaisedKicksPotMoreOftenUnderNoise) {
     const ai::Position pos = snookered();
     const ai::Evaluator eval(pos, 1.0, ai::heading_sigma_deg(pos.params));
     const Sweep s = sweep(pos, eval);
-    const double max_raise = ai::effort_for_level(5).max_raise_deg;
+    const double max_raise = ai::effort_for(rules::Game::nine_ball, 5).max_raise_deg;
     std::int64_t sims = 0;
     const std::vector<ai::Candidate> centred =
         ai::centred_kicks(eval, s.kicks, s.nominal, 12, max_raise, sims, 2);
@@ -166,8 +167,8 @@ TEST(PotWindow, TheMiddleOfTheWindowPotsMoreOftenUnderNoise) {
         const double sigma = ai::heading_sigma_deg(pos.params);
         const ai::Evaluator eval(pos, 1.0, sigma);
         std::int64_t sims = 0;
-        for (ai::Candidate c :
-             ai::pot_candidates(pos, l.cue, false, ai::effort_for_level(5), sigma, sims)) {
+        for (ai::Candidate c : ai::pot_candidates(
+                 pos, l.cue, false, ai::effort_for(rules::Game::nine_ball, 5), sigma, sims)) {
             const std::optional<ai::Candidate> m =
                 ai::centred(eval, c, ai::pot_window_search, sims);
             if (!m) continue;  // it misses without noise, or the middle of its window does

@@ -2,15 +2,15 @@
 // table with nothing on is worth exactly a safety, a sure game-winning pot nearly a win, a long
 // one less; played out over more shots it sees the win or the dead end a pot leads to; variants
 // stay near the pot they come from and inside the miscue limit.
-#include "ai/lookahead.hpp"
+#include "ai/internal/lookahead.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "ai/candidates.hpp"
-#include "ai/level.hpp"
-#include "ai/table_value.hpp"
+#include "ai/internal/candidates.hpp"
+#include "ai/internal/level.hpp"
+#include "ai/internal/table_value.hpp"
 #include "ai_support.hpp"
 
 namespace {
@@ -21,10 +21,17 @@ using rules::Game;
 
 constexpr double sigma = 0.21;  // the shot model's heading σ at 1×, default cue (heading_sigma_deg)
 
-double value_of(const ai::Position& pos) {
+// Level 5's value of the table in `pos`, the second ply played out `shots` shots.
+double played_out(const ai::Position& pos, int shots) {
     std::int64_t sims = 0;
-    const ai::Effort effort = ai::for_game(ai::effort_for_level(5), pos.ruleset.game);
+    ai::Effort effort = ai::effort_for(pos.ruleset.game, 5);
+    effort.playout_shots = shots;
     return ai::next_turn_value(pos, pos.state, effort, 1.0, sigma, sims);
+}
+
+// Level 5's value of the table, played out as far as in 8-ball (these layouts are 9-ball's).
+double value_of(const ai::Position& pos) {
+    return played_out(pos, ai::effort_for(Game::eight_ball, 5).playout_shots);
 }
 
 // The 9 `d` metres from the NE corner's mouth on its axis, the cue ball 0.3 m behind it.
@@ -61,15 +68,8 @@ TEST(NextTurnValue, ASureWinningPotIsNearlyAWinAndALongOneLess) {
 TEST(NextTurnValue, CountsItsSimulations) {
     const ai::Position pos = nine_on_the_axis(0.5);
     std::int64_t sims = 0;
-    ai::next_turn_value(pos, pos.state, ai::effort_for_level(5), 1.0, sigma, sims);
+    ai::next_turn_value(pos, pos.state, ai::effort_for(pos.ruleset.game, 5), 1.0, sigma, sims);
     EXPECT_GT(sims, 0);
-}
-
-double played_out(const ai::Position& pos, int shots) {
-    std::int64_t sims = 0;
-    ai::Effort effort = ai::for_game(ai::effort_for_level(5), pos.ruleset.game);
-    effort.playout_shots = shots;
-    return ai::next_turn_value(pos, pos.state, effort, 1.0, sigma, sims);
 }
 
 // The 1 straight in to the S side pocket from 0.4 m, the cue ball 0.3 m behind it; the 9 where
@@ -82,13 +82,14 @@ TEST(PlayOut, OnlyLevelFivePlaysOutFourShotsAndOnlyIn8Ball) {
     // Levels 1-4 keep the second ply (the next shot only); level 5 follows 4 shots in 8-ball (the
     // end of the rack's effort too); 9-ball, whose deeper search costs more per shot, does not.
     for (int level = ai::min_level; level < ai::max_level; ++level) {
-        EXPECT_EQ(ai::effort_for_level(level).playout_shots, 1) << "level " << level;
-        EXPECT_EQ(ai::nine_ball_effort(level).playout_shots, 1) << "level " << level;
-        EXPECT_EQ(ai::rack_end_effort(level).playout_shots, 1) << "level " << level;
+        EXPECT_EQ(ai::effort_for(Game::eight_ball, level).playout_shots, 1) << "level " << level;
+        EXPECT_EQ(ai::effort_for(Game::nine_ball, level).playout_shots, 1) << "level " << level;
+        EXPECT_EQ(ai::effort_for(Game::eight_ball, level, true).playout_shots, 1)
+            << "level " << level;
     }
-    EXPECT_EQ(ai::for_game(ai::effort_for_level(ai::max_level), Game::eight_ball).playout_shots, 4);
-    EXPECT_EQ(ai::for_game(ai::rack_end_effort(ai::max_level), Game::eight_ball).playout_shots, 4);
-    EXPECT_EQ(ai::for_game(ai::nine_ball_effort(ai::max_level), Game::nine_ball).playout_shots, 1);
+    EXPECT_EQ(ai::effort_for(Game::eight_ball, ai::max_level).playout_shots, 4);
+    EXPECT_EQ(ai::effort_for(Game::eight_ball, ai::max_level, true).playout_shots, 4);
+    EXPECT_EQ(ai::effort_for(Game::nine_ball, ai::max_level).playout_shots, 1);
     // And the table's value at level 5 is the played-out one.
     const ai::Position pos = one_then_nine({2.3, 0.25});
     EXPECT_EQ(value_of(pos), played_out(pos, 4));
@@ -129,14 +130,14 @@ TEST(PotVariants, StayNearThePotAndInsideTheMiscueLimit) {
     const ai::Position pos = nine_on_the_axis(0.8);
     std::int64_t sims = 0;
     const std::vector<ai::Candidate> pots = ai::pot_candidates(
-        pos, pos.state.positions.at(0), false, ai::effort_for_level(5), sigma, sims);
+        pos, pos.state.positions.at(0), false, ai::effort_for(Game::nine_ball, 5), sigma, sims);
     ASSERT_FALSE(pots.empty());
     for (const ai::Candidate& c : pots) {
         const std::vector<ai::Candidate> vs =
-            ai::pot_variants(pos, c, ai::effort_for_level(5), sims);
+            ai::pot_variants(pos, c, ai::effort_for(Game::nine_ball, 5), sims);
         EXPECT_FALSE(vs.empty());
         // The ball's speed (a raised cue drives the ball into the cloth by sin ε of the
-        // impulse, and a variant may be raised another way: docs/ai.md, stop 30).
+        // impulse, and a variant may be raised another way).
         const auto ball_speed = [](const physics::Stroke& st) {
             return st.speed * std::cos(st.elevation_deg * ai::deg);
         };

@@ -7,11 +7,11 @@
 #include <cstdint>
 #include <vector>
 
-#include "ai/candidates.hpp"
-#include "ai/evaluate.hpp"
-#include "ai/ghost_ball.hpp"
-#include "ai/level.hpp"
-#include "ai/planner.hpp"
+#include "ai/internal/candidates.hpp"
+#include "ai/internal/evaluate.hpp"
+#include "ai/internal/ghost_ball.hpp"
+#include "ai/internal/level.hpp"
+#include "ai/internal/planner.hpp"
 #include "ai_support.hpp"
 
 namespace {
@@ -26,7 +26,7 @@ physics::Params without_squirt() {
 
 TEST(ModelSigma, LevelFiveAssumesLessThanTheCuesOwn) {
     const physics::Params params;
-    const ai::Effort five = ai::effort_for_level(5);
+    const ai::Effort five = ai::effort_for(rules::Game::nine_ball, 5);
     EXPECT_DOUBLE_EQ(ai::model_sigma_deg(params, five, 1.0), 0.14);
     EXPECT_LT(ai::model_sigma_deg(params, five, 1.0), ai::heading_sigma_deg(params));
     EXPECT_DOUBLE_EQ(ai::model_sigma_deg(params, five, 5.0), 0.70);
@@ -35,18 +35,19 @@ TEST(ModelSigma, LevelFiveAssumesLessThanTheCuesOwn) {
 
 TEST(ModelSigma, LevelsOneToFourAssumeTheCuesOwn) {
     const physics::Params params;
-    for (int level = 1; level <= 4; ++level) {
-        const ai::Effort e = ai::effort_for_level(level);
-        EXPECT_DOUBLE_EQ(ai::model_sigma_deg(params, e, e.noise_multiplier),
-                         ai::heading_sigma_deg(params) * e.noise_multiplier)
-            << "level " << level;
-    }
+    for (int level = 1; level <= 4; ++level)
+        for (rules::Game game : {rules::Game::eight_ball, rules::Game::nine_ball}) {
+            const double m = ai::noise_multiplier(level);
+            EXPECT_DOUBLE_EQ(ai::model_sigma_deg(params, ai::effort_for(game, level), m),
+                             ai::heading_sigma_deg(params) * m)
+                << "level " << level;
+        }
 }
 
 // Without squirt the cue's own σ (the noise model's 0.125°) is below level 5's 0.14°: kept.
 TEST(ModelSigma, NeverAboveTheCuesOwn) {
     const physics::Params params = without_squirt();
-    EXPECT_DOUBLE_EQ(ai::model_sigma_deg(params, ai::effort_for_level(5), 1.0),
+    EXPECT_DOUBLE_EQ(ai::model_sigma_deg(params, ai::effort_for(rules::Game::nine_ball, 5), 1.0),
                      ai::heading_sigma_deg(params));
 }
 
@@ -87,7 +88,7 @@ void tally_pots(Vec2 cue, Vec2 object, const ai::Effort& effort,
 // the 9 on a grid and the cue ball 0.5–1.1 m from it: the share potted lies nearer the model's
 // chance at level 5's σ than at the cue's own, which under-rates them.
 TEST(ModelSigma, TheEnginePotsLevelFivesRaisedStrokesNearerItsSigma) {
-    ai::Effort effort = ai::effort_for_level(5);
+    ai::Effort effort = ai::effort_for(rules::Game::nine_ball, 5);
     effort.speeds = 2;  // 1.3 and 2.1 × the speed that just gets the ball there
     effort.spins = 2;   // stun and follow: no side, so raised
     const std::vector<ai::NoiseDraw> draws = ai::noise_draws(7, 32);

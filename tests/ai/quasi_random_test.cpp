@@ -1,7 +1,7 @@
 // The AI's noise draws (evaluate.hpp's noise_draws, quasi_random.hpp): reproducible from the
 // seed, each component a standard normal, and any first k of them spread over the distribution
 // far more evenly than k pseudo-random draws would be.
-#include "ai/quasi_random.hpp"
+#include "ai/internal/quasi_random.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "ai/evaluate.hpp"
+#include "ai/internal/evaluate.hpp"
 
 namespace {
 

@@ -1,10 +1,10 @@
-// The end of a rack (table_value.hpp's near_rack_end, level.hpp's rack_end_effort): where the
-// shooter's last few balls are left, level 5 searches wider; elsewhere, and at lower levels, the
-// effort is the level's own. And 9-ball's own effort (nine_ball_effort), deeper at level 5.
+// The end of a rack (table_value.hpp's near_rack_end, level.hpp's effort_for with `rack_end`):
+// where the shooter's last few balls are left, level 5 searches wider in 8-ball; elsewhere, and at
+// lower levels, the effort is the level's own. And 9-ball's level 5, deeper in every decision.
 #include <gtest/gtest.h>
 
-#include "ai/level.hpp"
-#include "ai/table_value.hpp"
+#include "ai/internal/level.hpp"
+#include "ai/internal/table_value.hpp"
 #include "ai_support.hpp"
 
 namespace {
@@ -43,25 +43,29 @@ TEST(NearRackEnd, NineBallCountsEveryBallOnTheTable) {
 }
 
 TEST(RackEndEffort, OnlyLevelFiveSearchesWiderAndOnlyInTheSearchAfterTheGrid) {
-    for (int level = ai::min_level; level < ai::max_level; ++level) {
-        const ai::Effort usual = ai::effort_for_level(level);
-        const ai::Effort end = ai::rack_end_effort(level);
-        EXPECT_EQ(end.shortlist, usual.shortlist) << "level " << level;
-        EXPECT_EQ(end.deep_samples, usual.deep_samples) << "level " << level;
-    }
-    const ai::Effort usual = ai::effort_for_level(ai::max_level);
-    const ai::Effort end = ai::rack_end_effort(ai::max_level);
+    for (int level = ai::min_level; level < ai::max_level; ++level)
+        EXPECT_EQ(ai::effort_for(Game::eight_ball, level, true),
+                  ai::effort_for(Game::eight_ball, level))
+            << "level " << level;
+    for (int level = ai::min_level; level <= ai::max_level; ++level)  // none in 9-ball
+        EXPECT_EQ(ai::effort_for(Game::nine_ball, level, true),
+                  ai::effort_for(Game::nine_ball, level))
+            << "level " << level;
+    const ai::Effort usual = ai::effort_for(Game::eight_ball, ai::max_level);
+    const ai::Effort end = ai::effort_for(Game::eight_ball, ai::max_level, true);
     EXPECT_GT(end.shortlist, usual.shortlist);
     EXPECT_GT(end.finalists, usual.finalists);
     EXPECT_GT(end.polish, usual.polish);
     EXPECT_GT(end.deep_finalists, usual.deep_finalists);
     EXPECT_GT(end.deep_samples, usual.deep_samples);
-    // The candidates, their draws and the second ply are the usual ones.
-    EXPECT_EQ(end.pot_pairs, usual.pot_pairs);
-    EXPECT_EQ(end.speeds, usual.speeds);
-    EXPECT_EQ(end.spins, usual.spins);
-    EXPECT_EQ(end.samples, usual.samples);
-    EXPECT_EQ(end.next_pairs, usual.next_pairs);
+    // The candidates, their draws and the second ply are the usual ones: nothing else differs.
+    ai::Effort widened = usual;
+    widened.shortlist = end.shortlist;
+    widened.finalists = end.finalists;
+    widened.polish = end.polish;
+    widened.deep_finalists = end.deep_finalists;
+    widened.deep_samples = end.deep_samples;
+    EXPECT_EQ(end, widened);
     // Each deep draw is one of the one-ply rounds' draws (planner.cpp draws (1 + finalist_rounds) ×
     // samples of them, 160 at level 5 in 8-ball); this holds to the first two rounds' 80.
     EXPECT_LE(end.deep_samples, 2 * end.samples);
@@ -69,20 +73,15 @@ TEST(RackEndEffort, OnlyLevelFiveSearchesWiderAndOnlyInTheSearchAfterTheGrid) {
 
 }  // namespace
 
-// 9-ball (level.hpp's nine_ball_effort): level 5 searches deeper in every decision; the other
-// levels as elsewhere.
+// 9-ball: level 5 searches deeper in every decision; the other levels as in 8-ball.
 namespace {
 
 TEST(NineBallEffort, OnlyLevelFiveSearchesDeeperAndOnlyAfterTheNoisyRounds) {
-    for (int level = ai::min_level; level < ai::max_level; ++level) {
-        const ai::Effort usual = ai::effort_for_level(level);
-        const ai::Effort nine = ai::nine_ball_effort(level);
-        EXPECT_EQ(nine.polish, usual.polish) << "level " << level;
-        EXPECT_EQ(nine.deep_finalists, usual.deep_finalists) << "level " << level;
-        EXPECT_EQ(nine.deep_samples, usual.deep_samples) << "level " << level;
-    }
-    const ai::Effort usual = ai::effort_for_level(ai::max_level);
-    const ai::Effort nine = ai::nine_ball_effort(ai::max_level);
+    for (int level = ai::min_level; level < ai::max_level; ++level)
+        EXPECT_EQ(ai::effort_for(Game::nine_ball, level), ai::effort_for(Game::eight_ball, level))
+            << "level " << level;
+    const ai::Effort usual = ai::effort_for(Game::eight_ball, ai::max_level);
+    const ai::Effort nine = ai::effort_for(Game::nine_ball, ai::max_level);
     EXPECT_GT(nine.polish, usual.polish);
     EXPECT_GT(nine.deep_finalists, usual.deep_finalists);
     EXPECT_GT(nine.deep_samples, usual.deep_samples);

@@ -5,10 +5,10 @@
 #include <cmath>
 #include <optional>
 
-#include "ai/aim.hpp"
-#include "ai/candidates.hpp"
-#include "ai/ghost_ball.hpp"
-#include "ai/level.hpp"
+#include "ai/internal/aim.hpp"
+#include "ai/internal/candidates.hpp"
+#include "ai/internal/ghost_ball.hpp"
+#include "ai/internal/level.hpp"
 #include "ai_support.hpp"
 #include "game/stroke_noise.hpp"
 
@@ -102,7 +102,7 @@ TEST(RaisedCue, AHardPotGoesToTheLimitAndNeverDoesWorse) {
 // is on a level cue, and the levels below 5 keep a level cue.
 TEST(RaisedCue, OnlyUnderNoiseAndAtLevelFive) {
     const ai::Position pos = two_balls();
-    const ai::Effort effort = ai::effort_for_level(5);
+    const ai::Effort effort = ai::effort_for(rules::Game::nine_ball, 5);
     ASSERT_GT(effort.max_raise_deg, 0.0);
     std::int64_t sims = 0;
     const double sigma = ai::heading_sigma_deg(pos.params);
@@ -119,7 +119,8 @@ TEST(RaisedCue, OnlyUnderNoiseAndAtLevelFive) {
     for (const ai::Candidate& c : ai::pot_candidates(pos, kCue, false, effort, 0.0, sims))
         EXPECT_EQ(c.stroke.elevation_deg, 0.0);
     for (int level = 1; level < 5; ++level)
-        EXPECT_EQ(ai::effort_for_level(level).max_raise_deg, 0.0) << "level " << level;
+        EXPECT_EQ(ai::effort_for(rules::Game::nine_ball, level).max_raise_deg, 0.0)
+            << "level " << level;
 }
 
 }  // namespace

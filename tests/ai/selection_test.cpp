@@ -1,14 +1,14 @@
 // Choosing the candidates for the next round (selection.hpp), and the leave it keys on: the ball
 // of the next pot that a noiseless stroke leaves (Evaluator::nominal with_leave).
-#include "ai/selection.hpp"
+#include "ai/internal/selection.hpp"
 
 #include <gtest/gtest.h>
 
 #include <vector>
 
-#include "ai/candidates.hpp"
-#include "ai/evaluate.hpp"
-#include "ai/level.hpp"
+#include "ai/internal/candidates.hpp"
+#include "ai/internal/evaluate.hpp"
+#include "ai/internal/level.hpp"
 #include "ai_support.hpp"
 
 namespace {
@@ -67,8 +67,9 @@ TEST(NominalLeave, IsTheBallOfTheNextPot) {
                           {{0, one - 0.4 * dir}, {1, one}, {2, {1.0, 0.4}}, {9, {0.5, 1.0}}});
     const ai::Evaluator eval(pos, 1.0, 0.21);
     std::int64_t sims = 0;
-    std::vector<ai::Candidate> pots = ai::pot_candidates(pos, pos.state.positions.at(0), false,
-                                                         ai::effort_for_level(5), 0.21, sims);
+    std::vector<ai::Candidate> pots =
+        ai::pot_candidates(pos, pos.state.positions.at(0), false,
+                           ai::effort_for(rules::Game::nine_ball, 5), 0.21, sims);
     ASSERT_FALSE(pots.empty());
     int stayed = 0;
     for (ai::Candidate& c : pots) {

@@ -5,9 +5,9 @@
 
 #include <vector>
 
-#include "ai/level.hpp"
-#include "ai/lookahead.hpp"
-#include "ai/table_value.hpp"
+#include "ai/internal/level.hpp"
+#include "ai/internal/lookahead.hpp"
+#include "ai/internal/table_value.hpp"
 #include "ai_support.hpp"
 
 namespace {
@@ -66,23 +66,22 @@ TEST(PositionValue, TakesTheCostOffForEachStuckBall) {
     EXPECT_DOUBLE_EQ(ai::position_value(pos, pos.state, sigma, 0.04), plain - 0.04);
 }
 
-TEST(ForGame, CountsStuckBallsAndDistinctLeavesIn8BallOnly) {
-    const ai::Effort five = ai::effort_for_level(5);
-    ASSERT_GT(five.stuck_ball_cost, 0.0);
-    ASSERT_GT(five.distinct_leaves, 0.0);
-    const ai::Effort eight = ai::for_game(five, Game::eight_ball);
-    EXPECT_EQ(eight.stuck_ball_cost, five.stuck_ball_cost);
-    EXPECT_EQ(eight.distinct_leaves, five.distinct_leaves);
-    const ai::Effort nine = ai::for_game(five, Game::nine_ball);
+TEST(EffortFor, CountsStuckBallsAndDistinctLeavesIn8BallOnly) {
+    for (bool rack_end : {false, true}) {
+        const ai::Effort eight = ai::effort_for(Game::eight_ball, 5, rack_end);
+        EXPECT_GT(eight.stuck_ball_cost, 0.0);
+        EXPECT_GT(eight.distinct_leaves, 0.0);
+    }
+    const ai::Effort nine = ai::effort_for(Game::nine_ball, 5);
     EXPECT_EQ(nine.stuck_ball_cost, 0.0);
     EXPECT_EQ(nine.distinct_leaves, 0.0);
-    EXPECT_EQ(nine.shortlist, five.shortlist);
+    EXPECT_EQ(nine.shortlist, ai::effort_for(Game::eight_ball, 5).shortlist);
 }
 
 TEST(NextTurnValue, NothingOnWithAStuckBallIsWorthLessThanASafety) {
     // The only stripe is boxed in: nothing on, and one ball to free.
     const ai::Position pos = boxed_nine(false);
-    const ai::Effort effort = ai::for_game(ai::effort_for_level(5), Game::eight_ball);
+    const ai::Effort effort = ai::effort_for(Game::eight_ball, 5);
     std::int64_t sims = 0;
     EXPECT_DOUBLE_EQ(ai::next_turn_value(pos, pos.state, effort, 1.0, sigma, sims),
                      ai::table_value(0.0) - effort.stuck_ball_cost);

@@ -3,7 +3,7 @@
 // reproducible from the seeds.
 #include <gtest/gtest.h>
 
-#include "ai/ai_player.hpp"
+#include "ai/ai.hpp"
 #include "game/autoplay.hpp"
 #include "game/random_player.hpp"
 #include "game/session.hpp"

@@ -5,7 +5,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "ai/evaluate.hpp"
+#include "ai/internal/evaluate.hpp"
+#include "ai/internal/private.hpp"
 
 namespace ai {
 

@@ -6,7 +6,8 @@
 
 #include <vector>
 
-#include "ai/position.hpp"
+#include "ai/internal/position.hpp"
+#include "ai/internal/private.hpp"
 #include "physics/vec.hpp"
 
 namespace ai {

@@ -15,15 +15,14 @@
 #include <optional>
 #include <vector>
 
-#include "ai/ghost_ball.hpp"
-#include "ai/level.hpp"
-#include "ai/position.hpp"
+#include "ai/internal/ghost_ball.hpp"
+#include "ai/internal/level.hpp"
+#include "ai/internal/position.hpp"
+#include "ai/internal/private.hpp"
 #include "physics/stroke.hpp"
 #include "rules/game_state.hpp"
 
 namespace ai {
-
-enum class Kind { pot, safety, kick, break_shot, push_out };
 
 struct Candidate {
     Kind kind = Kind::pot;
@@ -97,10 +96,10 @@ struct BreakSpec {
 };
 /// The break of `spec` in `pos`; empty when its spot is taken.
 std::optional<Candidate> break_candidate(const Position& pos, const BreakSpec& spec);
-/// The breaks level 5 chooses among in 9-ball, tuned offline (`break_tuning`, docs/ai.md "Breaks"):
-/// full on the apex ball from the middle or a little off it, hard. Of the spots, contacts and
-/// speeds measured, these leave the fewest balls with no path to a pocket and pocket the most, with
-/// no more scratches than the others.
+/// The breaks level 5 chooses among in 9-ball, tuned offline (bench/break_tuning.cpp): full on
+/// the apex ball from the middle or a little off it, hard. Of the spots, contacts and speeds
+/// that program plays, these leave the fewest balls with no path to a pocket and pocket the most,
+/// with no more scratches than the others. break_test.cpp.
 inline constexpr std::array<BreakSpec, 6> tuned_breaks{{{0.0, 0.0, 9.5},
                                                         {0.0, 0.0, 10.0},
                                                         {0.08, 0.0, 9.5},

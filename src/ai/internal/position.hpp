@@ -1,39 +1,16 @@
-// What the AI decides from: the rules, the table, the physics and the game's state before the
-// shot (with every ball's position), plus a pending choice of the rules, if any. Built from a
-// game::Session, or directly (the CLI's `decide`).
+// What the planner reads from a position (ai.hpp's Position): the balls the shooter wants, the
+// legal first contacts, the layout to simulate, and the free spots for a cue ball in hand.
 #pragma once
 
 #include <optional>
 #include <vector>
 
+#include "ai/ai.hpp"
+#include "ai/internal/private.hpp"
 #include "physics/ball_state.hpp"
-#include "physics/params.hpp"
-#include "physics/table.hpp"
 #include "rules/game_state.hpp"
-#include "rules/judge.hpp"
-#include "rules/verdict.hpp"
-
-namespace game {
-class Session;
-}
 
 namespace ai {
-
-struct Position {
-    rules::Ruleset ruleset;
-    physics::Table table;
-    physics::Params params;
-    /// The state before the shot; with a pending choice, the table as it lies (what the first
-    /// option leads to). Positions of every object ball on the table, and of the cue ball when it
-    /// is on the table (a cue ball in hand is placed by the AI).
-    rules::GameState state;
-    std::optional<rules::Choice> choice;  ///< a choice pending for the player to act
-};
-
-Position position_of(const game::Session& session);
-
-/// Whether the cue ball is to be placed (ball in hand) rather than played from where it lies.
-bool cue_in_hand(const rules::GameState& s);
 
 /// The object balls the shooter of `s` wants to pocket next (8-ball: his group, any but the 8 on
 /// an open table, the 8 once his group is cleared; 9-ball: the lowest ball).

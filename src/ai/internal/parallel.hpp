@@ -11,6 +11,8 @@
 #include <thread>
 #include <vector>
 
+#include "ai/internal/private.hpp"
+
 namespace ai {
 
 /// Calls f(i) for every i in [0, n), on `workers` threads (the caller's included).

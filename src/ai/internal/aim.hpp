@@ -8,7 +8,8 @@
 #include <map>
 #include <span>
 
-#include "ai/ghost_ball.hpp"
+#include "ai/internal/ghost_ball.hpp"
+#include "ai/internal/private.hpp"
 #include "physics/ball_state.hpp"
 #include "physics/params.hpp"
 #include "physics/stroke.hpp"

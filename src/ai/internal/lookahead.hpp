@@ -11,8 +11,9 @@
 
 #include <cstdint>
 
-#include "ai/level.hpp"
-#include "ai/position.hpp"
+#include "ai/internal/level.hpp"
+#include "ai/internal/position.hpp"
+#include "ai/internal/private.hpp"
 #include "rules/game_state.hpp"
 
 namespace ai {

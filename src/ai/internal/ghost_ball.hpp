@@ -9,6 +9,7 @@
 #include <map>
 #include <optional>
 
+#include "ai/internal/private.hpp"
 #include "physics/params.hpp"
 #include "physics/table.hpp"
 #include "physics/vec.hpp"

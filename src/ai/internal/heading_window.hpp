@@ -7,7 +7,7 @@
 //   pots   a pot's heading is refined to send the object ball at a point behind the pocket's
 //          mouth (aim.hpp), but the jaws, the far cushion and the other balls make the window
 //          of headings that pot lopsided around it.
-// docs/ai.md, "Strokes centred in their window".
+// heading_window_test.cpp.
 #pragma once
 
 #include <array>
@@ -15,8 +15,9 @@
 #include <optional>
 #include <vector>
 
-#include "ai/candidates.hpp"
-#include "ai/evaluate.hpp"
+#include "ai/internal/candidates.hpp"
+#include "ai/internal/evaluate.hpp"
+#include "ai/internal/private.hpp"
 
 namespace ai {
 

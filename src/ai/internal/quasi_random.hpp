@@ -4,10 +4,12 @@
 // first n points covers each component's distribution evenly (its empirical CDF is within about
 // log(n)/n of the normal's, where n pseudo-random draws stray by about 1/√n), so a stroke whose
 // success region happens to hold more of a few draws than its share gains less by it: the
-// search over many strokes on the same draws overfits them less (docs/ai.md, stop 26).
+// search over many strokes on the same draws overfits them less. quasi_random_test.cpp.
 #pragma once
 
 #include <cstdint>
+
+#include "ai/internal/private.hpp"
 
 namespace ai {
 

@@ -7,8 +7,9 @@
 #include <optional>
 #include <vector>
 
-#include "ai/ghost_ball.hpp"
-#include "ai/position.hpp"
+#include "ai/internal/ghost_ball.hpp"
+#include "ai/internal/position.hpp"
+#include "ai/internal/private.hpp"
 #include "rules/verdict.hpp"
 
 namespace ai {

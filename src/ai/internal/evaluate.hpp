@@ -9,8 +9,9 @@
 #include <optional>
 #include <vector>
 
-#include "ai/candidates.hpp"
-#include "ai/position.hpp"
+#include "ai/internal/candidates.hpp"
+#include "ai/internal/position.hpp"
+#include "ai/internal/private.hpp"
 #include "physics/stroke.hpp"
 
 namespace ai {
