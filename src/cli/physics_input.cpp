@@ -9,6 +9,7 @@
 #include <string>
 #include <string_view>
 
+#include "game/state_json.hpp"
 #include "physics/layout.hpp"
 #include "physics/rack.hpp"
 
@@ -80,36 +81,6 @@ physics::TableSpec read_table(const JsonIn& in, double ball_radius) {
     return spec;
 }
 
-physics::Params read_params(const JsonIn& in) {
-    in.expect_object({"ball_radius", "ball_mass", "gravity", "mu_slide", "mu_roll", "spin_decel",
-                      "e_ball", "mu_ball", "e_cushion", "mu_cushion", "cue_mass", "cue_tip_e",
-                      "cue_endmass", "miscue_limit"});
-    physics::Params p;
-    auto restitution = [](const JsonIn& v) { return v.number_in(0.0, 1.0); };
-    auto friction = [](const JsonIn& v) { return v.number_in(0.0, 10.0); };
-    auto up_to = [](double hi) { return [hi](const JsonIn& v) { return v.positive_up_to(hi); }; };
-    override_number(in, "ball_radius", p.ball_radius, up_to(0.5));
-    override_number(in, "ball_mass", p.ball_mass, up_to(100.0));
-    override_number(in, "gravity", p.gravity, up_to(1000.0));
-    override_number(in, "mu_slide", p.mu_slide, friction);
-    override_number(in, "mu_roll", p.mu_roll, friction);
-    override_number(in, "spin_decel", p.spin_decel, up_to(10000.0));
-    override_number(in, "e_ball", p.e_ball, restitution);
-    if (auto v = in.find("mu_ball")) {
-        if (v->is_null())
-            p.mu_ball.reset();
-        else
-            p.mu_ball = friction(*v);
-    }
-    override_number(in, "e_cushion", p.e_cushion, restitution);
-    override_number(in, "mu_cushion", p.mu_cushion, friction);
-    override_number(in, "cue_mass", p.cue_mass, up_to(100.0));
-    override_number(in, "cue_tip_e", p.cue_tip_e, restitution);
-    override_number(in, "cue_endmass", p.cue_endmass, up_to(100.0));
-    override_number(in, "miscue_limit", p.miscue_limit, up_to(1.0));
-    return p;
-}
-
 physics::Models read_models(const JsonIn& in) {
     in.expect_object({"ball_ball", "cushion"});
     physics::Models m;
@@ -123,23 +94,10 @@ physics::Models read_models(const JsonIn& in) {
     return m;
 }
 
-physics::Vec2 read_vec2(const JsonIn& in) {
-    if (!in.raw().is_array() || in.raw().size() != 2)
-        in.fail("expected [x, y]: an array of 2 numbers");
-    return {in.at(std::size_t{0}).number(), in.at(std::size_t{1}).number()};
-}
-
-physics::Vec3 read_vec3(const JsonIn& in) {
-    if (!in.raw().is_array() || in.raw().size() != 3)
-        in.fail("expected [x, y, z]: an array of 3 numbers");
-    return {in.at(std::size_t{0}).number(), in.at(std::size_t{1}).number(),
-            in.at(std::size_t{2}).number()};
-}
-
 namespace {
 
 physics::Vec2 read_position(const JsonIn& in) {
-    physics::Vec2 p = read_vec2(in);
+    physics::Vec2 p = game::read_vec2(in);
     if (std::fabs(p.x) > limits::max_coordinate || std::fabs(p.y) > limits::max_coordinate)
         in.fail(fmt::format("[{}, {}] is too far out: coordinates must be within ±{} m", p.x, p.y,
                             limits::max_coordinate));
@@ -174,13 +132,13 @@ std::vector<physics::BallState> read_balls(const JsonIn& in, const physics::Tabl
         first = i;
         s.pos = read_position(b.at("pos"));
         if (auto v = b.find("vel")) {
-            s.vel = read_vec2(*v);
+            s.vel = game::read_vec2(*v);
             if (!(physics::norm(s.vel) <= limits::max_ball_speed))
                 v->fail(fmt::format("speed {} m/s is too fast: at most {} m/s",
                                     physics::norm(s.vel), limits::max_ball_speed));
         }
         if (auto v = b.find("spin")) {
-            s.spin = read_vec3(*v);
+            s.spin = game::read_vec3(*v);
             if (!(physics::norm(s.spin) <= limits::max_ball_spin))
                 v->fail(fmt::format("spin {} rad/s is too fast: at most {} rad/s",
                                     physics::norm(s.spin), limits::max_ball_spin));

@@ -26,15 +26,8 @@ inline constexpr double max_table_size = 100.0;   ///< table lengths (unit: m)
 /// {"preset": "9ft", "length": ..., ...}; validated for a ball of radius `ball_radius`.
 physics::TableSpec read_table(const JsonIn& in, double ball_radius);
 
-/// `params`: partial overrides of the defaults, with their accepted ranges.
-physics::Params read_params(const JsonIn& in);
-
 /// `models`: {"ball_ball": "frictional" | "frictionless", "cushion": "han2005" | "simple"}.
 physics::Models read_models(const JsonIn& in);
-
-/// [x, y] and [x, y, z]: arrays of exactly 2 or 3 finite numbers.
-physics::Vec2 read_vec2(const JsonIn& in);
-physics::Vec3 read_vec3(const JsonIn& in);
 
 /// `balls`: [{"id": 0, "pos": [x, y], "vel": [vx, vy], "spin": [wx, wy, wz]}, ...], with
 /// unique ids 0–15, checked against the table (physics::validate_layout): no overlaps, every

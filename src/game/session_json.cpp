@@ -110,9 +110,9 @@ ordered_json record_json(const ShotRecord& r, bool keep_events) {
 // ---- Reading
 
 physics::TableSpec read_table(const Field& f, double ball_radius) {
-    f.expect_object({"length", "width", "corner_mouth", "side_mouth", "corner_facing_deg",
-                     "side_facing_deg", "jaw_nose_radius", "cushion_height", "corner_shelf",
-                     "side_shelf", "jaw_depth", "pockets"});
+    f.require_fields({"length", "width", "corner_mouth", "side_mouth", "corner_facing_deg",
+                      "side_facing_deg", "jaw_nose_radius", "cushion_height", "corner_shelf",
+                      "side_shelf", "jaw_depth", "pockets"});
     constexpr double max_size = 100.0;  // (unit: m)
     auto positive = [&](std::string_view key) {
         Field v = f.at(key);
@@ -143,47 +143,16 @@ physics::TableSpec read_table(const Field& f, double ball_radius) {
     return t;
 }
 
-physics::Params read_params(const Field& f) {
-    f.expect_object({"ball_radius", "ball_mass", "gravity", "mu_slide", "mu_roll", "spin_decel",
-                     "e_ball", "mu_ball", "e_cushion", "mu_cushion", "cue_mass", "cue_tip_e",
-                     "cue_endmass", "miscue_limit"});
-    auto positive_up_to = [&](std::string_view key, double hi) {
-        Field v = f.at(key);
-        const double x = v.number_in(0.0, hi);
-        if (!(x > 0.0)) v.fail("must be greater than 0");
-        return x;
-    };
-    auto in = [&](std::string_view key, double lo, double hi) {
-        return f.at(key).number_in(lo, hi);
-    };
-    physics::Params p;
-    p.ball_radius = positive_up_to("ball_radius", 0.5);
-    p.ball_mass = positive_up_to("ball_mass", 100.0);
-    p.gravity = positive_up_to("gravity", 1000.0);
-    p.mu_slide = in("mu_slide", 0.0, 10.0);
-    p.mu_roll = in("mu_roll", 0.0, 10.0);
-    p.spin_decel = positive_up_to("spin_decel", 10000.0);
-    p.e_ball = in("e_ball", 0.0, 1.0);
-    if (Field mu = f.at("mu_ball"); !mu.is_null()) p.mu_ball = mu.number_in(0.0, 10.0);
-    p.e_cushion = in("e_cushion", 0.0, 1.0);
-    p.mu_cushion = in("mu_cushion", 0.0, 10.0);
-    p.cue_mass = positive_up_to("cue_mass", 100.0);
-    p.cue_tip_e = in("cue_tip_e", 0.0, 1.0);
-    p.cue_endmass = positive_up_to("cue_endmass", 100.0);
-    p.miscue_limit = positive_up_to("miscue_limit", 1.0);
-    return p;
-}
-
 Config read_config(const Field& f) {
-    f.expect_object(
+    f.require_fields(
         {"game", "options", "table", "params", "players", "seed", "first_breaker", "keep_events"});
     Config c;
     c.game = f.at("game").name_of<rules::Game>();
-    c.options = read_options(f.at("options"));
-    c.params = read_params(f.at("params"));
+    c.options = read_options(f.at("options"), Fields::all);
+    c.params = read_params(f.at("params"), Fields::all);
     c.table = read_table(f.at("table"), c.params.ball_radius);
     Field players = f.at("players");
-    players.expect_object({"A", "B"});
+    players.require_fields({"A", "B"});
     for (rules::Player p : {rules::Player::A, rules::Player::B}) {
         Field n = players.at(name(p));
         std::string s = n.string();
@@ -202,7 +171,7 @@ int read_optional_pocket(const Field& f) {
 }
 
 ShotSummary read_summary(const Field& f, rules::Game game) {
-    f.expect_object(
+    f.require_fields(
         {"first_contact", "down", "cushions", "ball_contacts", "events", "duration", "truncated"});
     ShotSummary s;
     const int highest = rules::highest_ball(game);
@@ -211,7 +180,7 @@ ShotSummary read_summary(const Field& f, rules::Game game) {
     Field down = f.at("down");
     for (std::size_t i = 0; i < down.array_size(); ++i) {
         Field d = down.at(i);
-        d.expect_object({"ball", "pocket"});
+        d.require_fields({"ball", "pocket"});
         const int ball = static_cast<int>(d.at("ball").integer_in(0, highest));
         for (const BallDown& earlier : s.down)
             if (earlier.ball == ball)
@@ -228,12 +197,12 @@ ShotSummary read_summary(const Field& f, rules::Game game) {
 
 ShotRecord read_record(const Field& f, const TableContext& t, bool keep_events, int rack_number) {
     if (keep_events)
-        f.expect_object({"rack", "before", "stroke", "summary", "events", "verdict", "choice"});
+        f.require_fields({"rack", "before", "stroke", "summary", "events", "verdict", "choice"});
     else
-        f.expect_object({"rack", "before", "stroke", "summary", "verdict", "choice"});
+        f.require_fields({"rack", "before", "stroke", "summary", "verdict", "choice"});
     ShotRecord r;
     r.rack = static_cast<int>(f.at("rack").integer_in(0, rack_number));
-    r.before = read_state(f.at("before"), t);
+    r.before = read_state(f.at("before"), t, Fields::all);
     if (!r.before.positions.count(0))
         f.at("before")
             .at("positions")
@@ -243,7 +212,7 @@ ShotRecord read_record(const Field& f, const TableContext& t, bool keep_events, 
     if (keep_events) {
         Field events = f.at("events");
         for (std::size_t i = 0; i < events.array_size(); ++i)
-            r.events.push_back(read_event(events.at(i), t.game));
+            r.events.push_back(read_event(events.at(i), t.game, Fields::all));
     }
     r.verdict = read_verdict(f.at("verdict"), t);
     if (Field c = f.at("choice"); !c.is_null()) {
@@ -282,7 +251,7 @@ std::string Session::to_json() const {
 }
 
 Session Session::from_json(const std::string& text) {
-    const nlohmann::json doc = parse_save_document(text, "session");
+    const nlohmann::json doc = parse_document(text, "session");
     const Field root(doc, "session");
     if (!doc.is_object()) root.fail("not a Coolaaber session: expected a JSON object");
     {
@@ -297,8 +266,8 @@ Session Session::from_json(const std::string& text) {
             version.fail(fmt::format("version {} is not supported (this build reads version {})",
                                      version.raw().dump(), format_version));
     }
-    root.expect_object({"format", "version", "config", "game_number", "rack_number", "score",
-                        "state", "pending", "winner", "pocketed", "history"});
+    root.require_fields({"format", "version", "config", "game_number", "rack_number", "score",
+                         "state", "pending", "winner", "pocketed", "history"});
 
     Config config = read_config(root.at("config"));
     Session s(std::move(config), Restored{});
@@ -306,13 +275,13 @@ Session Session::from_json(const std::string& text) {
     s.game_number_ = static_cast<int>(root.at("game_number").integer_in(0, max_count));
     s.rack_number_ = static_cast<int>(root.at("rack_number").integer_in(0, max_count));
     Field score = root.at("score");
-    score.expect_object({"A", "B"});
+    score.require_fields({"A", "B"});
     for (rules::Player p : {rules::Player::A, rules::Player::B})
         s.score_[rules::index(p)] =
             static_cast<int>(score.at(rules::name(p)).integer_in(0, max_count));
 
     if (Field w = root.at("winner"); !w.is_null()) s.winner_ = w.name_of<rules::Player>();
-    s.state_ = read_state(root.at("state"), t, s.winner_.has_value());
+    s.state_ = read_state(root.at("state"), t, Fields::all, s.winner_.has_value());
 
     if (Field p = root.at("pending"); !p.is_null()) {
         if (s.winner_) p.fail("must be null: the game is over");
@@ -327,7 +296,7 @@ Session Session::from_json(const std::string& text) {
     Field pocketed = root.at("pocketed");
     for (std::size_t i = 0; i < pocketed.array_size(); ++i) {
         Field item = pocketed.at(i);
-        item.expect_object({"ball", "pocket", "by"});
+        item.require_fields({"ball", "pocket", "by"});
         Field ball = item.at("ball");
         const int id = static_cast<int>(ball.integer_in(-1000, 1000));
         if (id < 1 || id > rules::highest_ball(t.game))
