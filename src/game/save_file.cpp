@@ -49,6 +49,14 @@ bool write_new_file(const std::filesystem::path& path, const std::string& text,
 }  // namespace
 
 void write_file_atomically(const std::filesystem::path& path, const std::string& text) {
+    // A directory, a FIFO or a device where the file should be is the user's: never replace it.
+    std::error_code exists;
+    const std::filesystem::file_status target = std::filesystem::status(path, exists);
+    if (!exists && std::filesystem::exists(target) && !std::filesystem::is_regular_file(target))
+        throw std::runtime_error(
+            fmt::format("cannot save to {}: it is there and is not a regular file (move it away "
+                        "to save here)",
+                        path.string()));
     const std::filesystem::path tmp = temp_beside(path);
     std::string error;
     if (!write_new_file(tmp, text, error)) {
