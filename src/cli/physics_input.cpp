@@ -15,70 +15,8 @@
 
 namespace cli {
 
-namespace {
-
-physics::TableSpec preset(const JsonIn& in) {
-    std::string name = in.one_of({"7ft", "8ft", "9ft", "unbounded"});
-    std::optional<physics::TableSpec> spec = physics::table_preset(name);
-    if (!spec) in.fail(fmt::format("the engine has no table preset \"{}\"", name));
-    return *spec;
-}
-
-// Overrides `field` with the number at `key`, if present, checked by `read`.
-template <typename Read>
-void override_number(const JsonIn& in, std::string_view key, double& field, Read read) {
-    if (auto v = in.find(key)) field = read(*v);
-}
-
-}  // namespace
-
 physics::TableSpec read_table(const JsonIn& in, double ball_radius) {
-    physics::TableSpec spec;
-    if (in.raw().is_string()) {
-        spec = preset(in);
-    } else if (in.raw().is_object()) {
-        in.expect_object({"preset", "length", "width", "corner_mouth", "side_mouth",
-                          "corner_facing_deg", "side_facing_deg", "jaw_nose_radius",
-                          "cushion_height", "corner_shelf", "side_shelf", "jaw_depth", "pockets"});
-        if (auto p = in.find("preset")) spec = preset(*p);
-        auto length = [](const JsonIn& v) { return v.positive_up_to(limits::max_table_size); };
-        auto depth = [](const JsonIn& v) { return v.number_in(0.0, limits::max_table_size); };
-        auto angle = [](const JsonIn& v) {
-            double a = v.number();
-            if (!(a > 0.0 && a < 180.0))
-                v.fail(fmt::format("{} is out of range: must be between 0 and 180 degrees", a));
-            return a;
-        };
-        override_number(in, "length", spec.length, length);
-        override_number(in, "width", spec.width, length);
-        override_number(in, "corner_mouth", spec.corner_mouth, length);
-        override_number(in, "side_mouth", spec.side_mouth, length);
-        override_number(in, "corner_facing_deg", spec.corner_facing_deg, angle);
-        override_number(in, "side_facing_deg", spec.side_facing_deg, angle);
-        override_number(in, "jaw_nose_radius", spec.jaw_nose_radius, depth);
-        override_number(in, "cushion_height", spec.cushion_height, length);
-        override_number(in, "corner_shelf", spec.corner_shelf, depth);
-        override_number(in, "side_shelf", spec.side_shelf, depth);
-        override_number(in, "jaw_depth", spec.jaw_depth, length);
-        if (auto p = in.find("pockets")) spec.pockets = p->boolean();
-    } else {
-        in.fail(
-            fmt::format("expected a preset name (\"7ft\", \"8ft\", \"9ft\", \"unbounded\") or an "
-                        "object like {{\"preset\": \"9ft\", \"length\": 2.54}}"));
-    }
-
-    if (std::optional<std::string> problem = physics::validate_table_spec(spec, ball_radius)) {
-        // The engine's message starts with the field name ("corner_mouth: ..."): point at that
-        // field when the document overrode it, else at the table as a whole.
-        std::string message = *problem;
-        auto colon = message.find(": ");
-        if (colon != std::string::npos && in.raw().is_object()) {
-            std::string field = message.substr(0, colon);
-            if (in.has(field)) throw BadInput(in.path() + "." + field, message.substr(colon + 2));
-        }
-        in.fail(fmt::format("{} (for balls of radius R = {} m)", message, ball_radius));
-    }
-    return spec;
+    return game::read_table(in, ball_radius, game::Fields::required);
 }
 
 physics::Models read_models(const JsonIn& in) {

@@ -109,40 +109,6 @@ ordered_json record_json(const ShotRecord& r, bool keep_events) {
 
 // ---- Reading
 
-physics::TableSpec read_table(const Field& f, double ball_radius) {
-    f.require_fields({"length", "width", "corner_mouth", "side_mouth", "corner_facing_deg",
-                      "side_facing_deg", "jaw_nose_radius", "cushion_height", "corner_shelf",
-                      "side_shelf", "jaw_depth", "pockets"});
-    constexpr double max_size = 100.0;  // (unit: m)
-    auto positive = [&](std::string_view key) {
-        Field v = f.at(key);
-        const double x = v.number_in(0.0, max_size);
-        if (!(x > 0.0)) v.fail("must be greater than 0");
-        return x;
-    };
-    auto angle = [&](std::string_view key) {
-        Field v = f.at(key);
-        const double x = v.number_in(0.0, 180.0);
-        if (!(x > 0.0 && x < 180.0)) v.fail("must be between 0 and 180 degrees");
-        return x;
-    };
-    physics::TableSpec t;
-    t.length = positive("length");
-    t.width = positive("width");
-    t.corner_mouth = positive("corner_mouth");
-    t.side_mouth = positive("side_mouth");
-    t.corner_facing_deg = angle("corner_facing_deg");
-    t.side_facing_deg = angle("side_facing_deg");
-    t.jaw_nose_radius = f.at("jaw_nose_radius").number_in(0.0, max_size);
-    t.cushion_height = positive("cushion_height");
-    t.corner_shelf = f.at("corner_shelf").number_in(0.0, max_size);
-    t.side_shelf = f.at("side_shelf").number_in(0.0, max_size);
-    t.jaw_depth = positive("jaw_depth");
-    t.pockets = f.at("pockets").boolean();
-    if (std::optional<std::string> e = physics::validate_table_spec(t, ball_radius)) f.fail(*e);
-    return t;
-}
-
 Config read_config(const Field& f) {
     f.require_fields(
         {"game", "options", "table", "params", "players", "seed", "first_breaker", "keep_events"});
@@ -150,7 +116,7 @@ Config read_config(const Field& f) {
     c.game = f.at("game").name_of<rules::Game>();
     c.options = read_options(f.at("options"), Fields::all);
     c.params = read_params(f.at("params"), Fields::all);
-    c.table = read_table(f.at("table"), c.params.ball_radius);
+    c.table = read_table(f.at("table"), c.params.ball_radius, Fields::all);
     Field players = f.at("players");
     players.require_fields({"A", "B"});
     for (rules::Player p : {rules::Player::A, rules::Player::B}) {

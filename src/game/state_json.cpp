@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "physics/layout.hpp"
+#include "physics/table.hpp"
 #include "rules/names.hpp"
 
 namespace game {
@@ -371,6 +372,83 @@ double read_param(const Field& v, ParamRange r) {
 }
 
 }  // namespace
+
+namespace {
+
+constexpr double max_table_size = 100.0;  // (unit: m) far beyond any table; keeps sums finite
+
+physics::TableSpec preset(const Field& f) {
+    const std::string name = f.one_of({"7ft", "8ft", "9ft", "unbounded"});
+    std::optional<physics::TableSpec> spec = physics::table_preset(name);
+    if (!spec) f.fail(fmt::format("the engine has no table preset \"{}\"", name));
+    return *spec;
+}
+
+// The fields of a table object over `spec`: with `Fields::all` every one must be given.
+void read_table_fields(const Field& f, physics::TableSpec& spec, Fields fields) {
+    const std::initializer_list<std::string_view> keys = {
+        "length",          "width",           "corner_mouth",   "side_mouth",   "corner_facing_deg",
+        "side_facing_deg", "jaw_nose_radius", "cushion_height", "corner_shelf", "side_shelf",
+        "jaw_depth",       "pockets"};
+    if (fields == Fields::all)
+        f.require_fields(keys, {"preset"});
+    else
+        f.require_fields(
+            {}, {"preset", "length", "width", "corner_mouth", "side_mouth", "corner_facing_deg",
+                 "side_facing_deg", "jaw_nose_radius", "cushion_height", "corner_shelf",
+                 "side_shelf", "jaw_depth", "pockets"});
+    if (auto p = f.find("preset")) spec = preset(*p);
+    auto set = [&](std::string_view key, double& field, auto read) {
+        if (std::optional<Field> v = f.find(key)) field = read(*v);
+    };
+    auto length = [](const Field& v) { return v.positive_up_to(max_table_size); };
+    auto depth = [](const Field& v) { return v.number_in(0.0, max_table_size); };
+    auto angle = [](const Field& v) {
+        const double a = v.number();
+        if (!(a > 0.0 && a < 180.0))
+            v.fail(fmt::format("{} is out of range: must be between 0 and 180 degrees", a));
+        return a;
+    };
+    set("length", spec.length, length);
+    set("width", spec.width, length);
+    set("corner_mouth", spec.corner_mouth, length);
+    set("side_mouth", spec.side_mouth, length);
+    set("corner_facing_deg", spec.corner_facing_deg, angle);
+    set("side_facing_deg", spec.side_facing_deg, angle);
+    set("jaw_nose_radius", spec.jaw_nose_radius, depth);
+    set("cushion_height", spec.cushion_height, length);
+    set("corner_shelf", spec.corner_shelf, depth);
+    set("side_shelf", spec.side_shelf, depth);
+    set("jaw_depth", spec.jaw_depth, length);
+    if (auto p = f.find("pockets")) spec.pockets = p->boolean();
+}
+
+}  // namespace
+
+physics::TableSpec read_table(const Field& f, double ball_radius, Fields fields) {
+    physics::TableSpec spec;
+    if (f.raw().is_string() && fields == Fields::required) {
+        spec = preset(f);
+    } else if (f.raw().is_object()) {
+        read_table_fields(f, spec, fields);
+    } else {
+        f.fail(
+            "expected a preset name (\"7ft\", \"8ft\", \"9ft\", \"unbounded\") or an object like "
+            "{\"preset\": \"9ft\", \"length\": 2.54}");
+    }
+    if (std::optional<std::string> problem = physics::validate_table_spec(spec, ball_radius)) {
+        // The engine's message starts with the field name ("corner_mouth: ..."): point at that
+        // field when the document gave it, else at the table as a whole.
+        const std::string& message = *problem;
+        const auto colon = message.find(": ");
+        if (colon != std::string::npos && f.raw().is_object()) {
+            const std::string field = message.substr(0, colon);
+            if (f.has(field)) f.at(field).fail(message.substr(colon + 2));
+        }
+        f.fail(fmt::format("{} (for balls of radius R = {} m)", message, ball_radius));
+    }
+    return spec;
+}
 
 physics::Params read_params(const Field& f, Fields fields) {
     const std::initializer_list<std::string_view> keys = {

@@ -50,6 +50,10 @@ struct TableContext {
 
 physics::Vec2 read_vec2(const Field& f);
 physics::Vec3 read_vec3(const Field& f);
+/// A table: an object of the table's dimensions (docs/cli.md, `table`), checked for balls of
+/// `ball_radius`. With `Fields::required` a preset name ("9ft") or an object of overrides of
+/// a preset (`"preset"`, default "9ft"); with `Fields::all` every dimension is given.
+physics::TableSpec read_table(const Field& f, double ball_radius, Fields fields);
 /// The physical parameters, each within its accepted range (docs/cli.md, `params`); with
 /// `Fields::required` every one is optional and keeps its default.
 physics::Params read_params(const Field& f, Fields fields);
