@@ -216,78 +216,103 @@ std::string Session::to_json() const {
     return j.dump() + "\n";
 }
 
-Session Session::from_json(const std::string& text) {
-    const nlohmann::json doc = parse_document(text, "session");
-    const Field root(doc, "session");
-    if (!doc.is_object()) root.fail("not a Coolaaber session: expected a JSON object");
-    {
-        std::optional<Field> format = root.find("format");
-        if (!format || !format->raw().is_string() || format->string() != format_name)
-            throw LoadError(
-                "session.format",
-                fmt::format("not a Coolaaber session file (expected \"format\": \"{}\")",
-                            format_name));
-        Field version = root.at("version");
-        if (version.integer_in(1, 1000000) != format_version)
-            version.fail(fmt::format("version {} is not supported (this build reads version {})",
-                                     version.raw().dump(), format_version));
-    }
-    root.require_fields({"format", "version", "config", "game_number", "rack_number", "score",
-                         "state", "pending", "winner", "pocketed", "history"});
+namespace {
 
-    Config config = read_config(root.at("config"));
-    Session s(std::move(config), Restored{});
-    const TableContext t{s.config_.game, s.table_, s.config_.params};
-    s.game_number_ = static_cast<int>(root.at("game_number").integer_in(0, max_count));
-    s.rack_number_ = static_cast<int>(root.at("rack_number").integer_in(0, max_count));
-    Field score = root.at("score");
-    score.require_fields({"A", "B"});
+// `format` and `version`: a Coolaaber session of the version this build reads.
+void check_format(const Field& root) {
+    if (!root.raw().is_object()) root.fail("not a Coolaaber session: expected a JSON object");
+    std::optional<Field> format = root.find("format");
+    if (!format || !format->raw().is_string() || format->string() != format_name)
+        throw LoadError(
+            "session.format",
+            fmt::format("not a Coolaaber session file (expected \"format\": \"{}\")", format_name));
+    Field version = root.at("version");
+    if (version.integer_in(1, 1000000) != format_version)
+        version.fail(fmt::format("version {} is not supported (this build reads version {})",
+                                 version.raw().dump(), format_version));
+}
+
+std::array<int, 2> read_score(const Field& f) {
+    f.require_fields({"A", "B"});
+    std::array<int, 2> score{};
     for (rules::Player p : {rules::Player::A, rules::Player::B})
-        s.score_[rules::index(p)] =
-            static_cast<int>(score.at(rules::name(p)).integer_in(0, max_count));
+        score[rules::index(p)] = static_cast<int>(f.at(rules::name(p)).integer_in(0, max_count));
+    return score;
+}
 
-    if (Field w = root.at("winner"); !w.is_null()) s.winner_ = w.name_of<rules::Player>();
-    s.state_ = read_state(root.at("state"), t, Fields::all, s.winner_.has_value());
+// `pending`: null, or a verdict offering a choice, with the table as `state` shows it.
+std::optional<rules::Verdict> read_pending(const Field& f, const TableContext& t,
+                                           const rules::GameState& state, bool over) {
+    if (f.is_null()) return std::nullopt;
+    if (over) f.fail("must be null: the game is over");
+    rules::Verdict v = read_verdict(f, t);
+    if (!v.choice) f.at("choice").fail("a pending verdict offers a choice");
+    if (game::to_json(v.state) != game::to_json(state))
+        f.at("state").fail(
+            "differs from session.state (a pending choice shows the table as it lies)");
+    return v;
+}
 
-    if (Field p = root.at("pending"); !p.is_null()) {
-        if (s.winner_) p.fail("must be null: the game is over");
-        rules::Verdict v = read_verdict(p, t);
-        if (!v.choice) p.at("choice").fail("a pending verdict offers a choice");
-        if (game::to_json(v.state) != game::to_json(s.state_))
-            p.at("state").fail(
-                "differs from session.state (a pending choice shows the table as it lies)");
-        s.pending_ = std::move(v);
-    }
-
-    Field pocketed = root.at("pocketed");
-    for (std::size_t i = 0; i < pocketed.array_size(); ++i) {
-        Field item = pocketed.at(i);
+// `pocketed`: every object ball of the game not on the table, once each.
+std::vector<Pocketed> read_pocketed(const Field& f, const TableContext& t,
+                                    const rules::GameState& state) {
+    std::vector<Pocketed> pocketed;
+    const int highest = rules::highest_ball(t.game);
+    for (std::size_t i = 0; i < f.array_size(); ++i) {
+        Field item = f.at(i);
         item.require_fields({"ball", "pocket", "by"});
         Field ball = item.at("ball");
         const int id = static_cast<int>(ball.integer_in(-1000, 1000));
-        if (id < 1 || id > rules::highest_ball(t.game))
+        if (id < 1 || id > highest)
             ball.fail(fmt::format("ball {} does not exist (the object balls of {} are 1 to {})", id,
-                                  rules::name(t.game), rules::highest_ball(t.game)));
-        if (s.state_.has(id))
+                                  rules::name(t.game), highest));
+        if (state.has(id))
             ball.fail(fmt::format("ball {} is also on the table (session.state.on_table)", id));
-        for (const Pocketed& earlier : s.pocketed_)
+        for (const Pocketed& earlier : pocketed)
             if (earlier.ball == id) ball.fail(fmt::format("ball {} is listed twice", id));
-        s.pocketed_.push_back(
+        pocketed.push_back(
             {id, read_optional_pocket(item.at("pocket")), item.at("by").name_of<rules::Player>()});
     }
-    for (int id = 1; id <= rules::highest_ball(t.game); ++id) {
-        const bool down = std::any_of(s.pocketed_.begin(), s.pocketed_.end(),
+    for (int id = 1; id <= highest; ++id) {
+        const bool down = std::any_of(pocketed.begin(), pocketed.end(),
                                       [id](const Pocketed& p) { return p.ball == id; });
-        if (!down && !s.state_.has(id))
-            pocketed.fail(fmt::format("ball {} is neither on the table nor pocketed", id));
+        if (!down && !state.has(id))
+            f.fail(fmt::format("ball {} is neither on the table nor pocketed", id));
     }
+    return pocketed;
+}
 
-    Field history = root.at("history");
-    for (std::size_t i = 0; i < history.array_size(); ++i)
-        s.history_.push_back(read_record(history.at(i), t, s.config_.keep_events, s.rack_number_));
-    for (std::size_t i = 0; i + 1 < s.history_.size(); ++i)
-        if (s.history_[i].verdict.game_over)
-            history.at(i).at("verdict").fail("the game ended here, yet more shots follow");
+// `history`: the shots, none after one that ended the game.
+std::vector<ShotRecord> read_history(const Field& f, const TableContext& t, bool keep_events,
+                                     int rack_number) {
+    std::vector<ShotRecord> history;
+    for (std::size_t i = 0; i < f.array_size(); ++i)
+        history.push_back(read_record(f.at(i), t, keep_events, rack_number));
+    for (std::size_t i = 0; i + 1 < history.size(); ++i)
+        if (history[i].verdict.game_over)
+            f.at(i).at("verdict").fail("the game ended here, yet more shots follow");
+    return history;
+}
+
+}  // namespace
+
+Session Session::from_json(const std::string& text) {
+    const nlohmann::json doc = parse_document(text, "session");
+    const Field root(doc, "session");
+    check_format(root);
+    root.require_fields({"format", "version", "config", "game_number", "rack_number", "score",
+                         "state", "pending", "winner", "pocketed", "history"});
+
+    Session s(read_config(root.at("config")), Restored{});
+    const TableContext t{s.config_.game, s.table_, s.config_.params};
+    s.game_number_ = static_cast<int>(root.at("game_number").integer_in(0, max_count));
+    s.rack_number_ = static_cast<int>(root.at("rack_number").integer_in(0, max_count));
+    s.score_ = read_score(root.at("score"));
+    if (Field w = root.at("winner"); !w.is_null()) s.winner_ = w.name_of<rules::Player>();
+    s.state_ = read_state(root.at("state"), t, Fields::all, s.winner_.has_value());
+    s.pending_ = read_pending(root.at("pending"), t, s.state_, s.winner_.has_value());
+    s.pocketed_ = read_pocketed(root.at("pocketed"), t, s.state_);
+    s.history_ = read_history(root.at("history"), t, s.config_.keep_events, s.rack_number_);
     if (s.winner_ && (s.history_.empty() || !s.history_.back().verdict.game_over))
         root.at("winner").fail("the game is over, but the last shot of the history did not end it");
     if (s.pending_ &&
