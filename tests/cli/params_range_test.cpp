@@ -96,7 +96,8 @@ TEST(ParamsRange, AllEndsAtOnceRun) {
 }
 
 TEST(ParamsRange, TinyLegalLookingValuesExitTwoNotOne) {
-    // Once an internal error ("the engine produced a non-finite number", exit 1).
+    // Tiny values that look legal are bad input (exit 2), never a non-finite number from the
+    // engine (an internal error, exit 1).
     for (const char* param : {"\"ball_mass\": 5e-324", "\"mu_slide\": 1e-300",
                               "\"gravity\": 1e-300", "\"mu_roll\": 1e-300"}) {
         const std::string doc = std::string(R"({"balls":[{"id":0,"pos":[1,0.6]}],)") +

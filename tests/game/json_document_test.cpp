@@ -26,7 +26,7 @@ std::string array_of_objects(std::size_t n) {
 }
 
 TEST(ParseDocument, AMillionObjectsInOneArrayParseInLinearTime) {
-    // nlohmann's callback parser took minutes here: it rescans the array at each object's end.
+    // nlohmann's callback parser rescans the array at each object's end: minutes here.
     const std::string text = array_of_objects(1'000'000);
     const auto start = std::chrono::steady_clock::now();
     const nlohmann::json doc = parse_document(text, "");
