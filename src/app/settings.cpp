@@ -3,13 +3,12 @@
 #include <fmt/format.h>
 
 #include <cstdlib>
-#include <fstream>
-#include <iterator>
 #include <nlohmann/json.hpp>
 
 #include "game/atomic_file.hpp"
 #include "game/json_field.hpp"
 #include "game/state_json.hpp"
+#include "game/text_file.hpp"
 #include "rules/names.hpp"
 
 namespace app {
@@ -60,10 +59,10 @@ std::string settings_to_json(const Settings& s) {
 }
 
 Settings settings_from_json(const std::string& text) {
-    const nlohmann::json doc = game::parse_save_document(text, "settings");
+    const nlohmann::json doc = game::parse_document(text, "settings");
     const game::Field f(doc, "settings");
-    f.expect_object({"format", "version"}, {"game", "view", "sound", "power", "aim_guide", "names",
-                                            "players", "noise", "house_rules", "window"});
+    f.require_fields({"format", "version"}, {"game", "view", "sound", "power", "aim_guide", "names",
+                                             "players", "noise", "house_rules", "window"});
     if (f.at("format").string() != "coolaaber-settings")
         f.at("format").fail("not a Coolaaber settings file (expected \"coolaaber-settings\")");
     if (f.at("version").integer_in(1, 1000) != 1)
@@ -100,9 +99,9 @@ Settings settings_from_json(const std::string& text) {
         }
     }
     if (auto v = f.find("noise")) s.noise = v->number_in(0.0, 10.0);
-    if (auto v = f.find("house_rules")) s.house_rules = game::read_options(*v);
+    if (auto v = f.find("house_rules")) s.house_rules = game::read_options(*v, game::Fields::all);
     if (auto w = f.find("window")) {
-        w->expect_object({}, {"width", "height", "fullscreen"});
+        w->require_fields({}, {"width", "height", "fullscreen"});
         if (auto v = w->find("width")) s.window_width = static_cast<int>(v->integer_in(320, 16384));
         if (auto v = w->find("height"))
             s.window_height = static_cast<int>(v->integer_in(240, 16384));
@@ -126,18 +125,13 @@ std::filesystem::path keep_aside(const std::filesystem::path& path) {
 LoadedSettings load_settings(const std::filesystem::path& path) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) return {};
-    std::string text;
-    {
-        std::ifstream in(path, std::ios::binary);
-        if (in) text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    }
     try {
-        return {settings_from_json(text), std::nullopt};
+        return {settings_from_json(game::read_regular_file(path)), std::nullopt};
     } catch (const game::LoadError& e) {
         const std::filesystem::path aside = keep_aside(path);
         return {Settings{},
-                fmt::format("{}: {}; it was kept as {} and the default settings are used",
-                            path.string(), e.what(),
+                fmt::format("{}{}; it was kept as {} and the default settings are used",
+                            e.path() == path.string() ? "" : path.string() + ": ", e.what(),
                             aside.empty() ? std::string("(could not rename it)") : aside.string())};
     }
 }

@@ -1,10 +1,11 @@
 // The verbs of coolaaber-cli (docs/cli.md). Each takes the parsed input document and
-// returns the output document; bad input throws cli::BadInput.
+// returns the output document; bad input throws cli::BadInput (cli/json_in.hpp).
 #pragma once
 
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 
 namespace cli {
 
@@ -18,6 +19,14 @@ nlohmann::ordered_json judge_command(const nlohmann::json& input);
 /// `decide`: a game's state (and a pending choice) → the AI's stroke, call, ball-in-hand spot,
 /// push-out or choice, its expected success, the simulations it ran and the seconds it took.
 nlohmann::ordered_json decide_command(const nlohmann::json& input);
+
+/// The verbs that read one JSON document.
+enum class DocumentVerb { simulate, judge, decide };
+
+/// Runs `verb` on the text of its input document and returns the output document (one line,
+/// or indented when `pretty`, with a final newline). Bad input, the document's text included,
+/// throws BadInput; it never exits or aborts, so a fuzzer may call it with any bytes.
+std::string run_document(DocumentVerb verb, std::string_view text, bool pretty = false);
 
 /// `bench --runs N`: simulates each standard scene `runs` times and reports timings.
 inline constexpr std::int64_t default_bench_runs = 2000;

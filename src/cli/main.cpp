@@ -11,17 +11,15 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <iterator>
 #include <new>
-#include <sstream>
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/flags.hpp"
 #include "cli/json_in.hpp"
 #include "cli/json_out.hpp"
+#include "game/text_file.hpp"
 
 namespace {
 
@@ -29,35 +27,30 @@ constexpr int exit_ok = 0;
 constexpr int exit_internal = 1;
 constexpr int exit_bad_input = 2;
 
+// The command line as given: flag values are text until read strictly (cli/flags.hpp).
+struct CommandLine {
+    std::string file = "-";
+    bool pretty = false;
+    std::string runs = std::to_string(cli::default_bench_runs);
+    cli::MatchOptions match;
+    std::string games = std::to_string(cli::MatchOptions{}.games);
+    std::string noise = fmt::format("{}", cli::MatchOptions{}.noise);
+};
+
+struct Verbs {
+    CLI::App* simulate;
+    CLI::App* judge;
+    CLI::App* decide;
+    CLI::App* bench;
+    CLI::App* match;
+};
+
 // One line on stderr: newlines in a message would break the one-line contract.
 void print_error(const std::string& message) {
     std::string line = "error: " + message;
     for (char& c : line)
         if (c == '\n' || c == '\r') c = ' ';
     std::fputs((line + "\n").c_str(), stderr);
-}
-
-// The input document from FILE, or standard input when FILE is "-".
-std::string read_input(const std::string& file) {
-    if (file == "-") {
-        std::ostringstream text;
-        text << std::cin.rdbuf();
-        if (std::cin.bad()) throw cli::BadInput("-", "cannot read standard input");
-        return text.str();
-    }
-    std::error_code ec;
-    if (std::filesystem::is_directory(file, ec))
-        throw cli::BadInput(file, "is a directory: give a JSON file, or - for standard input");
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw cli::BadInput(file, "cannot open the file: check its name and permissions");
-    std::string text;
-    try {
-        text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    } catch (const std::exception& e) {
-        throw cli::BadInput(file, fmt::format("cannot read the file ({})", e.what()));
-    }
-    if (in.bad()) throw cli::BadInput(file, "cannot read the file");
-    return text;
 }
 
 // Writes the whole document at once, so that a failure leaves nothing half-written.
@@ -70,75 +63,65 @@ int print_document(std::string_view text) {
     return exit_ok;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-    CLI::App app{
-        "coolaaber-cli: the Coolaaber pool engine without a window. Reads one JSON "
-        "document, writes one JSON document (docs/cli.md).",
-        "coolaaber-cli"};
-    app.require_subcommand(1);
-    app.fallthrough();
-
-    std::string file = "-";
-    bool pretty = false;
-    std::int64_t runs = cli::default_bench_runs;
-
-    CLI::App* simulate =
-        app.add_subcommand("simulate", "Simulate one shot: balls, a strike → events");
-    CLI::App* judge = app.add_subcommand("judge", "Apply the rules of a game to one shot's events");
-    CLI::App* decide = app.add_subcommand("decide", "The computer player's decision in a position");
-    CLI::App* bench = app.add_subcommand("bench", "Time the standard scenes");
-    cli::MatchOptions match_options;
-    CLI::App* match = app.add_subcommand("match", "Play whole games between two players");
-    match->add_option("--game", match_options.game, "8ball or 9ball")->capture_default_str();
-    match->add_option("--players", match_options.players, "Two players: random, ai:LEVEL")
+void add_match_flags(CLI::App& match, CommandLine& line) {
+    cli::MatchOptions& o = line.match;
+    match.add_option("--game", o.game, "8ball or 9ball")->capture_default_str();
+    match.add_option("--players", o.players, "Two players: random, ai:LEVEL")
         ->capture_default_str();
-    match->add_option("--games", match_options.games, "Games to play")->capture_default_str();
-    match->add_option("--seed", match_options.seed, "Seed of the racks and the players")
-        ->capture_default_str();
-    match->add_option("--log", match_options.log, "Write one JSON line per shot to FILE");
-    match->add_option("--noise", match_options.noise, "Scale of the execution noise")
-        ->capture_default_str();
-    match->add_flag("--duplicate", match_options.duplicate,
-                    "Play each seed twice, the sides swapped");
-    for (CLI::App* verb : {simulate, judge, decide})
-        verb->add_option("FILE", file, "Input JSON document; - or absent: standard input");
-    bench->add_option("--runs", runs, "Simulations per scene")->capture_default_str();
-    for (CLI::App* a : {&app, simulate, judge, decide, bench, match})
-        a->add_flag("--pretty", pretty, "Indent the output (default: one line)");
+    match.add_option("--games", line.games, "Games to play")->capture_default_str();
+    match.add_option("--seed", o.seed, "Seed of the racks and the players")->capture_default_str();
+    match.add_option("--log", o.log, "Write one JSON line per shot to FILE");
+    match.add_option("--noise", line.noise, "Scale of the execution noise")->capture_default_str();
+    match.add_flag("--duplicate", o.duplicate, "Play each seed twice, the sides swapped");
+}
 
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForAllHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        print_error(fmt::format("command line: {} (see coolaaber-cli --help)", e.what()));
-        return exit_bad_input;
+Verbs add_verbs(CLI::App& app, CommandLine& line) {
+    Verbs v{};
+    v.simulate = app.add_subcommand("simulate", "Simulate one shot: balls, a strike → events");
+    v.judge = app.add_subcommand("judge", "Apply the rules of a game to one shot's events");
+    v.decide = app.add_subcommand("decide", "The computer player's decision in a position");
+    v.bench = app.add_subcommand("bench", "Time the standard scenes");
+    v.match = app.add_subcommand("match", "Play whole games between two players");
+    add_match_flags(*v.match, line);
+    for (CLI::App* verb : {v.simulate, v.judge, v.decide})
+        verb->add_option("FILE", line.file, "Input JSON document; - or absent: standard input");
+    v.bench->add_option("--runs", line.runs, "Simulations per scene")->capture_default_str();
+    for (CLI::App* a : {&app, v.simulate, v.judge, v.decide, v.bench, v.match})
+        a->add_flag("--pretty", line.pretty, "Indent the output (default: one line)");
+    return v;
+}
+
+// The input document from FILE, or standard input when FILE is "-", within the size limit.
+std::string read_input(const std::string& file) {
+    if (file == "-") return game::read_stream(std::cin, "-");
+    return game::read_regular_file(file);
+}
+
+// Runs the verb given; bad input throws cli::BadInput.
+std::string run_verb(const Verbs& v, CommandLine& line) {
+    if (v.simulate->parsed())
+        return cli::run_document(cli::DocumentVerb::simulate, read_input(line.file), line.pretty);
+    if (v.judge->parsed())
+        return cli::run_document(cli::DocumentVerb::judge, read_input(line.file), line.pretty);
+    if (v.decide->parsed())
+        return cli::run_document(cli::DocumentVerb::decide, read_input(line.file), line.pretty);
+    nlohmann::ordered_json out;
+    if (v.bench->parsed()) {
+        out = cli::bench_command(cli::read_integer_flag("--runs", line.runs));
+    } else {
+        cli::MatchOptions& o = line.match;
+        o.games = cli::read_integer_flag("--games", line.games);
+        o.noise = cli::read_number_flag("--noise", line.noise);
+        if (v.match->count("--log") > 0) o.log = cli::read_file_flag("--log", o.log);
+        out = cli::match_command(o);
     }
+    return cli::write_document(out, line.pretty);
+}
 
+// Runs the verb and prints its document, or the error: the exit status.
+int run_and_print(const Verbs& v, CommandLine& line) {
     try {
-        std::string text;
-        if (simulate->parsed()) {
-            nlohmann::ordered_json out =
-                cli::simulate_command(cli::parse_document(read_input(file)));
-            text = cli::write_document(out, pretty);
-        } else if (judge->parsed()) {
-            nlohmann::ordered_json out = cli::judge_command(cli::parse_document(read_input(file)));
-            text = cli::write_document(out, pretty);
-        } else if (decide->parsed()) {
-            nlohmann::ordered_json out = cli::decide_command(cli::parse_document(read_input(file)));
-            text = cli::write_document(out, pretty);
-        } else if (bench->parsed()) {
-            nlohmann::ordered_json out = cli::bench_command(runs);
-            text = cli::write_document(out, pretty);
-        } else if (match->parsed()) {
-            nlohmann::ordered_json out = cli::match_command(match_options);
-            text = cli::write_document(out, pretty);
-        }
-        return print_document(text);
+        return print_document(run_verb(v, line));
     } catch (const cli::BadInput& e) {
         print_error(e.what());
         return exit_bad_input;
@@ -152,4 +135,28 @@ int main(int argc, char** argv) {
         print_error("internal: unknown error");
         return exit_internal;
     }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{
+        "coolaaber-cli: the Coolaaber pool engine without a window. Reads one JSON "
+        "document, writes one JSON document (docs/cli.md).",
+        "coolaaber-cli"};
+    app.require_subcommand(1);
+    app.fallthrough();
+    CommandLine line;
+    const Verbs verbs = add_verbs(app, line);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        print_error(fmt::format("command line: {} (see coolaaber-cli --help)", e.what()));
+        return exit_bad_input;
+    }
+    return run_and_print(verbs, line);
 }

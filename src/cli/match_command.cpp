@@ -113,12 +113,15 @@ nlohmann::ordered_json log_line(std::int64_t game_index, int shot, const std::st
     return j;
 }
 
-}  // namespace
+// The options, read and checked.
+struct Match {
+    rules::Game game;
+    std::array<std::string, 2> kinds;  ///< the players of --players
+    std::uint64_t seed;
+    bool by_seat;  ///< the same kind on both sides: results by seat (A, B), else by kind
+};
 
-nlohmann::ordered_json match_command(const MatchOptions& options) {
-    using clock = std::chrono::steady_clock;
-    const auto start = clock::now();
-
+Match read_match(const MatchOptions& options) {
     std::optional<rules::Game> game = rules::parse<rules::Game>(options.game);
     if (!game)
         throw BadInput(
@@ -137,63 +140,34 @@ nlohmann::ordered_json match_command(const MatchOptions& options) {
     if (!std::isfinite(options.noise) || options.noise < 0.0 || options.noise > max_noise)
         throw BadInput("--noise", fmt::format("{} is out of range: must be from 0 to {}",
                                               options.noise, max_noise));
-    std::ofstream log;
-    if (!options.log.empty()) {
-        log.open(options.log, std::ios::binary | std::ios::trunc);
-        if (!log)
-            throw BadInput("--log", fmt::format("cannot write \"{}\": check the path and its "
-                                                "permissions",
-                                                options.log));
-    }
+    return {*game, kinds, seed, kinds[0] == kinds[1]};
+}
 
-    // Same kind on both sides: results by seat; else by kind.
-    const bool by_seat = kinds[0] == kinds[1];
+// What the games add up to.
+struct Tally {
     std::map<std::string, std::int64_t> wins;
-    std::map<std::string, std::vector<double>> decisions;
-    for (int seat = 0; seat < 2; ++seat) {
-        const std::string key = by_seat ? (seat == 0 ? "A" : "B") : kinds[seat];
-        wins[key] = 0;
-        decisions[key];
-    }
+    std::map<std::string, std::vector<double>> decisions;  ///< seconds per decision
     std::int64_t shots = 0, fouls = 0, break_and_runs = 0, stalemates = 0;
     nlohmann::ordered_json capped = nlohmann::ordered_json::array();
 
-    for (std::int64_t k = 0; k < options.games; ++k) {
-        const std::int64_t seed_index = options.duplicate ? k / 2 : k;
-        const bool swapped = options.duplicate && k % 2 == 1;
-        const std::uint64_t game_seed = derive(seed, static_cast<std::uint64_t>(seed_index));
-        // who[seat]: the index in --players of the player sitting there.
-        const std::array<int, 2> who = swapped ? std::array{1, 0} : std::array{0, 1};
-        std::array<std::unique_ptr<game::Player>, 2> players;
-        for (int seat = 0; seat < 2; ++seat)
-            players[seat] =
-                make_player(kinds[who[seat]], derive(game_seed, 1 + who[seat]), options.noise);
+    explicit Tally(const Match& m) {
+        for (int seat = 0; seat < 2; ++seat) {
+            const std::string key = m.by_seat ? (seat == 0 ? "A" : "B") : m.kinds[seat];
+            wins[key] = 0;
+            decisions[key];
+        }
+    }
 
-        game::Config config;
-        config.game = *game;
-        config.seed = game_seed;
-        config.names = {kinds[who[0]], kinds[who[1]]};
-        config.keep_events = log.is_open();
-        game::Session session(config);
-
-        int shot_number = 0;
-        game::ShotObserver observer;
-        if (log.is_open())
-            observer = [&](const game::Session& s, const game::ShotRecord& r) {
-                nlohmann::ordered_json line = log_line(k, ++shot_number, s.name(r.shooter()), r);
-                log << write_document(line, false);
-            };
-        const game::GameReport report =
-            game::play_game(session, {players[0].get(), players[1].get()}, {}, options.noise,
-                            derive(game_seed, 100), observer);
-
+    // Game `k`, `who[seat]` the index in --players of the player sitting there.
+    void add(const Match& m, std::int64_t k, const std::array<int, 2>& who,
+             const game::GameReport& report) {
         shots += report.shots;
         fouls += report.fouls;
         stalemates += report.stalemates;
         if (report.break_and_run) ++break_and_runs;
         if (report.capped) capped.push_back(k);
         auto key = [&](int seat) {
-            return by_seat ? std::string(seat == 0 ? "A" : "B") : kinds[who[seat]];
+            return m.by_seat ? std::string(seat == 0 ? "A" : "B") : m.kinds[who[seat]];
         };
         if (report.winner) ++wins[key(static_cast<int>(rules::index(*report.winner)))];
         for (int seat = 0; seat < 2; ++seat) {
@@ -202,27 +176,58 @@ nlohmann::ordered_json match_command(const MatchOptions& options) {
                      report.decision_seconds[seat].end());
         }
     }
-    if (log.is_open()) {
-        log.flush();
-        if (!log) throw BadInput("--log", fmt::format("cannot write \"{}\"", options.log));
-    }
+};
 
+// Plays game `k` of the match, writing its shots to `log` when it is open.
+void play_one(const MatchOptions& options, const Match& m, std::int64_t k, std::ofstream& log,
+              Tally& tally) {
+    const std::int64_t seed_index = options.duplicate ? k / 2 : k;
+    const bool swapped = options.duplicate && k % 2 == 1;
+    const std::uint64_t game_seed = derive(m.seed, static_cast<std::uint64_t>(seed_index));
+    const std::array<int, 2> who = swapped ? std::array{1, 0} : std::array{0, 1};
+    std::array<std::unique_ptr<game::Player>, 2> players;
+    for (int seat = 0; seat < 2; ++seat)
+        players[seat] =
+            make_player(m.kinds[who[seat]], derive(game_seed, 1 + who[seat]), options.noise);
+
+    game::Config config;
+    config.game = m.game;
+    config.seed = game_seed;
+    config.names = {m.kinds[who[0]], m.kinds[who[1]]};
+    config.keep_events = log.is_open();
+    game::Session session(config);
+
+    int shot_number = 0;
+    game::ShotObserver observer;
+    if (log.is_open())
+        observer = [&](const game::Session& s, const game::ShotRecord& r) {
+            nlohmann::ordered_json line = log_line(k, ++shot_number, s.name(r.shooter()), r);
+            log << write_document(line, false);
+        };
+    const game::GameReport report =
+        game::play_game(session, {players[0].get(), players[1].get()}, {}, options.noise,
+                        derive(game_seed, 100), observer);
+    tally.add(m, k, who, report);
+}
+
+nlohmann::ordered_json summary(const MatchOptions& options, const Match& m, Tally& tally,
+                               double seconds) {
     nlohmann::ordered_json out;
     out["game"] = options.game;
     out["games"] = options.games;
-    out["players"] = kinds;
+    out["players"] = m.kinds;
     nlohmann::ordered_json wins_json = nlohmann::ordered_json::object();
-    for (const auto& [key, n] : wins) wins_json[key] = n;
+    for (const auto& [key, n] : tally.wins) wins_json[key] = n;
     out["wins"] = std::move(wins_json);
-    out["shots"] = shots;
-    out["fouls"] = fouls;
-    out["break_and_runs"] = break_and_runs;
-    out["stalemates"] = stalemates;
-    out["capped"] = capped.size();
-    out["capped_games"] = std::move(capped);
-    out["seconds"] = std::chrono::duration<double>(clock::now() - start).count();
+    out["shots"] = tally.shots;
+    out["fouls"] = tally.fouls;
+    out["break_and_runs"] = tally.break_and_runs;
+    out["stalemates"] = tally.stalemates;
+    out["capped"] = tally.capped.size();
+    out["capped_games"] = std::move(tally.capped);
+    out["seconds"] = seconds;
     nlohmann::ordered_json decision_json = nlohmann::ordered_json::object();
-    for (auto& [key, times] : decisions) {
+    for (auto& [key, times] : tally.decisions) {
         std::sort(times.begin(), times.end());
         decision_json[key] = times.empty()
                                  ? nlohmann::ordered_json{{"median", nullptr}, {"p95", nullptr}}
@@ -231,6 +236,29 @@ nlohmann::ordered_json match_command(const MatchOptions& options) {
     }
     out["decision_seconds"] = std::move(decision_json);
     return out;
+}
+
+}  // namespace
+
+nlohmann::ordered_json match_command(const MatchOptions& options) {
+    using clock = std::chrono::steady_clock;
+    const auto start = clock::now();
+    const Match m = read_match(options);
+    std::ofstream log;
+    if (!options.log.empty()) {
+        log.open(options.log, std::ios::binary | std::ios::trunc);
+        if (!log)
+            throw BadInput("--log", fmt::format("cannot write \"{}\": check the path and its "
+                                                "permissions",
+                                                options.log));
+    }
+    Tally tally(m);
+    for (std::int64_t k = 0; k < options.games; ++k) play_one(options, m, k, log, tally);
+    if (log.is_open()) {
+        log.flush();
+        if (!log) throw BadInput("--log", fmt::format("cannot write \"{}\"", options.log));
+    }
+    return summary(options, m, tally, std::chrono::duration<double>(clock::now() - start).count());
 }
 
 }  // namespace cli

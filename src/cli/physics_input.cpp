@@ -9,105 +9,14 @@
 #include <string>
 #include <string_view>
 
+#include "game/state_json.hpp"
 #include "physics/layout.hpp"
 #include "physics/rack.hpp"
 
 namespace cli {
 
-namespace {
-
-physics::TableSpec preset(const JsonIn& in) {
-    std::string name = in.one_of({"7ft", "8ft", "9ft", "unbounded"});
-    std::optional<physics::TableSpec> spec = physics::table_preset(name);
-    if (!spec) in.fail(fmt::format("the engine has no table preset \"{}\"", name));
-    return *spec;
-}
-
-// Overrides `field` with the number at `key`, if present, checked by `read`.
-template <typename Read>
-void override_number(const JsonIn& in, std::string_view key, double& field, Read read) {
-    if (auto v = in.find(key)) field = read(*v);
-}
-
-}  // namespace
-
 physics::TableSpec read_table(const JsonIn& in, double ball_radius) {
-    physics::TableSpec spec;
-    if (in.raw().is_string()) {
-        spec = preset(in);
-    } else if (in.raw().is_object()) {
-        in.expect_object({"preset", "length", "width", "corner_mouth", "side_mouth",
-                          "corner_facing_deg", "side_facing_deg", "jaw_nose_radius",
-                          "cushion_height", "corner_shelf", "side_shelf", "jaw_depth", "pockets"});
-        if (auto p = in.find("preset")) spec = preset(*p);
-        auto length = [](const JsonIn& v) { return v.positive_up_to(limits::max_table_size); };
-        auto depth = [](const JsonIn& v) { return v.number_in(0.0, limits::max_table_size); };
-        auto angle = [](const JsonIn& v) {
-            double a = v.number();
-            if (!(a > 0.0 && a < 180.0))
-                v.fail(fmt::format("{} is out of range: must be between 0 and 180 degrees", a));
-            return a;
-        };
-        override_number(in, "length", spec.length, length);
-        override_number(in, "width", spec.width, length);
-        override_number(in, "corner_mouth", spec.corner_mouth, length);
-        override_number(in, "side_mouth", spec.side_mouth, length);
-        override_number(in, "corner_facing_deg", spec.corner_facing_deg, angle);
-        override_number(in, "side_facing_deg", spec.side_facing_deg, angle);
-        override_number(in, "jaw_nose_radius", spec.jaw_nose_radius, depth);
-        override_number(in, "cushion_height", spec.cushion_height, length);
-        override_number(in, "corner_shelf", spec.corner_shelf, depth);
-        override_number(in, "side_shelf", spec.side_shelf, depth);
-        override_number(in, "jaw_depth", spec.jaw_depth, length);
-        if (auto p = in.find("pockets")) spec.pockets = p->boolean();
-    } else {
-        in.fail(
-            fmt::format("expected a preset name (\"7ft\", \"8ft\", \"9ft\", \"unbounded\") or an "
-                        "object like {{\"preset\": \"9ft\", \"length\": 2.54}}"));
-    }
-
-    if (std::optional<std::string> problem = physics::validate_table_spec(spec, ball_radius)) {
-        // The engine's message starts with the field name ("corner_mouth: ..."): point at that
-        // field when the document overrode it, else at the table as a whole.
-        std::string message = *problem;
-        auto colon = message.find(": ");
-        if (colon != std::string::npos && in.raw().is_object()) {
-            std::string field = message.substr(0, colon);
-            if (in.has(field)) throw BadInput(in.path() + "." + field, message.substr(colon + 2));
-        }
-        in.fail(fmt::format("{} (for balls of radius R = {} m)", message, ball_radius));
-    }
-    return spec;
-}
-
-physics::Params read_params(const JsonIn& in) {
-    in.expect_object({"ball_radius", "ball_mass", "gravity", "mu_slide", "mu_roll", "spin_decel",
-                      "e_ball", "mu_ball", "e_cushion", "mu_cushion", "cue_mass", "cue_tip_e",
-                      "cue_endmass", "miscue_limit"});
-    physics::Params p;
-    auto restitution = [](const JsonIn& v) { return v.number_in(0.0, 1.0); };
-    auto friction = [](const JsonIn& v) { return v.number_in(0.0, 10.0); };
-    auto up_to = [](double hi) { return [hi](const JsonIn& v) { return v.positive_up_to(hi); }; };
-    override_number(in, "ball_radius", p.ball_radius, up_to(0.5));
-    override_number(in, "ball_mass", p.ball_mass, up_to(100.0));
-    override_number(in, "gravity", p.gravity, up_to(1000.0));
-    override_number(in, "mu_slide", p.mu_slide, friction);
-    override_number(in, "mu_roll", p.mu_roll, friction);
-    override_number(in, "spin_decel", p.spin_decel, up_to(10000.0));
-    override_number(in, "e_ball", p.e_ball, restitution);
-    if (auto v = in.find("mu_ball")) {
-        if (v->is_null())
-            p.mu_ball.reset();
-        else
-            p.mu_ball = friction(*v);
-    }
-    override_number(in, "e_cushion", p.e_cushion, restitution);
-    override_number(in, "mu_cushion", p.mu_cushion, friction);
-    override_number(in, "cue_mass", p.cue_mass, up_to(100.0));
-    override_number(in, "cue_tip_e", p.cue_tip_e, restitution);
-    override_number(in, "cue_endmass", p.cue_endmass, up_to(100.0));
-    override_number(in, "miscue_limit", p.miscue_limit, up_to(1.0));
-    return p;
+    return game::read_table(in, ball_radius, game::Fields::required);
 }
 
 physics::Models read_models(const JsonIn& in) {
@@ -123,23 +32,10 @@ physics::Models read_models(const JsonIn& in) {
     return m;
 }
 
-physics::Vec2 read_vec2(const JsonIn& in) {
-    if (!in.raw().is_array() || in.raw().size() != 2)
-        in.fail("expected [x, y]: an array of 2 numbers");
-    return {in.at(std::size_t{0}).number(), in.at(std::size_t{1}).number()};
-}
-
-physics::Vec3 read_vec3(const JsonIn& in) {
-    if (!in.raw().is_array() || in.raw().size() != 3)
-        in.fail("expected [x, y, z]: an array of 3 numbers");
-    return {in.at(std::size_t{0}).number(), in.at(std::size_t{1}).number(),
-            in.at(std::size_t{2}).number()};
-}
-
 namespace {
 
 physics::Vec2 read_position(const JsonIn& in) {
-    physics::Vec2 p = read_vec2(in);
+    physics::Vec2 p = game::read_vec2(in);
     if (std::fabs(p.x) > limits::max_coordinate || std::fabs(p.y) > limits::max_coordinate)
         in.fail(fmt::format("[{}, {}] is too far out: coordinates must be within ±{} m", p.x, p.y,
                             limits::max_coordinate));
@@ -174,13 +70,13 @@ std::vector<physics::BallState> read_balls(const JsonIn& in, const physics::Tabl
         first = i;
         s.pos = read_position(b.at("pos"));
         if (auto v = b.find("vel")) {
-            s.vel = read_vec2(*v);
+            s.vel = game::read_vec2(*v);
             if (!(physics::norm(s.vel) <= limits::max_ball_speed))
                 v->fail(fmt::format("speed {} m/s is too fast: at most {} m/s",
                                     physics::norm(s.vel), limits::max_ball_speed));
         }
         if (auto v = b.find("spin")) {
-            s.spin = read_vec3(*v);
+            s.spin = game::read_vec3(*v);
             if (!(physics::norm(s.spin) <= limits::max_ball_spin))
                 v->fail(fmt::format("spin {} rad/s is too fast: at most {} rad/s",
                                     physics::norm(s.spin), limits::max_ball_spin));

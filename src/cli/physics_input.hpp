@@ -1,5 +1,6 @@
-// Reading the physics parts of an input document (tables, parameters, models, balls, strokes)
-// with the checks of docs/cli.md: every bad value throws BadInput naming its JSON path.
+// Reading the physics parts of an input document (tables, models, balls, racks, strokes) with
+// the checks of docs/cli.md: every bad value throws BadInput naming its JSON path. Parameters
+// are game::read_params (game/state_json.hpp), shared with the saved games.
 #pragma once
 
 #include <vector>
@@ -19,22 +20,15 @@ inline constexpr double max_coordinate = 1000.0;  ///< |x|, |y| of a ball (unit:
 inline constexpr double max_ball_speed = 100.0;   ///< |vel| of a ball (unit: m/s)
 inline constexpr double max_ball_spin = 10000.0;  ///< |spin| of a ball (unit: rad/s)
 inline constexpr double max_cue_speed = 20.0;     ///< strike speed (unit: m/s)
-inline constexpr double max_table_size = 100.0;   ///< table lengths (unit: m)
 }  // namespace limits
 
-/// `table`: a preset name ("7ft", "8ft", "9ft", "unbounded") or an object
-/// {"preset": "9ft", "length": ..., ...}; validated for a ball of radius `ball_radius`.
+/// `table` (game::read_table with the CLI's optional fields): a preset name ("7ft", "8ft",
+/// "9ft", "unbounded") or an object {"preset": "9ft", "length": ..., ...}; validated for a
+/// ball of radius `ball_radius`.
 physics::TableSpec read_table(const JsonIn& in, double ball_radius);
-
-/// `params`: partial overrides of the defaults, with their accepted ranges.
-physics::Params read_params(const JsonIn& in);
 
 /// `models`: {"ball_ball": "frictional" | "frictionless", "cushion": "han2005" | "simple"}.
 physics::Models read_models(const JsonIn& in);
-
-/// [x, y] and [x, y, z]: arrays of exactly 2 or 3 finite numbers.
-physics::Vec2 read_vec2(const JsonIn& in);
-physics::Vec3 read_vec3(const JsonIn& in);
 
 /// `balls`: [{"id": 0, "pos": [x, y], "vel": [vx, vy], "spin": [wx, wy, wz]}, ...], with
 /// unique ids 0–15, checked against the table (physics::validate_layout): no overlaps, every

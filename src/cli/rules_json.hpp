@@ -1,7 +1,7 @@
 // JSON ↔ rules types (docs/cli.md, `judge`): reading a game's options, state and a shot's
 // events with every check of the contract (bad input names its JSON path), and writing states
-// and verdicts in the contract's field order. The writers are game/state_json.hpp's, which the
-// session's save files use too: one schema for both.
+// and verdicts in the contract's field order. The readers and writers are game/state_json.hpp's,
+// which the session's save files use too: one schema for both.
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -3,56 +3,16 @@
 #include <string>
 
 #include "cli/json_out.hpp"
+#include "game/state_json.hpp"
 #include "physics/table.hpp"
 
 namespace cli {
 
 using nlohmann::ordered_json;
 
+// The game's writer (game/state_json.hpp): saved games and the CLI write events alike.
 ordered_json event_to_json(const physics::Event& event) {
-    ordered_json e;
-    e["time"] = event.time;
-    e["type"] = std::string(physics::to_string(event.type));
-    ordered_json ids = ordered_json::array();
-    for (int k = 0; k < event.ball_count; ++k) ids.push_back(event.ball(k));
-    e["balls"] = std::move(ids);
-
-    switch (event.type) {
-        case physics::EventType::transition:
-            e["from"] = std::string(physics::to_string(event.from));
-            e["to"] = std::string(physics::to_string(event.to));
-            break;
-        case physics::EventType::ball_ball:
-            e["speed"] = event.speed;
-            break;
-        case physics::EventType::cushion:
-            e["speed"] = event.speed;
-            if (event.rail >= 0)
-                e["cushion"] = std::string(physics::rail_name(event.rail));
-            else
-                e["pocket_jaw"] = std::string(physics::pocket_name(event.pocket));
-            break;
-        case physics::EventType::pocket:
-            e["pocket"] = std::string(physics::pocket_name(event.pocket));
-            break;
-        case physics::EventType::strike:
-        case physics::EventType::miscue:
-        case physics::EventType::off_table:
-            break;
-    }
-
-    ordered_json pos = ordered_json::array(), vel = ordered_json::array(),
-                 spin = ordered_json::array();
-    for (std::size_t k = 0; k < event.ball_count; ++k) {
-        const physics::EventBall& b = event.balls[k];
-        pos.push_back(to_json(b.pos));
-        vel.push_back(to_json(b.vel));
-        spin.push_back(to_json(b.spin));
-    }
-    e["pos"] = std::move(pos);
-    e["vel"] = std::move(vel);
-    e["spin"] = std::move(spin);
-    return e;
+    return game::to_json(event);
 }
 
 ordered_json events_to_json(std::span<const physics::Event> events) {

@@ -9,6 +9,7 @@
 #include "cli/json_in.hpp"
 #include "cli/physics_input.hpp"
 #include "cli/shot_output.hpp"
+#include "game/state_json.hpp"
 #include "physics/simulate.hpp"
 
 namespace cli {
@@ -51,7 +52,7 @@ SimulateInput read_input(const JsonIn& doc) {
     doc.expect_object(
         {"table", "params", "models", "balls", "rack", "strike", "sample_times", "max_events"});
     SimulateInput in;
-    if (auto p = doc.find("params")) in.params = read_params(*p);
+    if (auto p = doc.find("params")) in.params = game::read_params(*p, game::Fields::required);
     if (auto m = doc.find("models")) in.options.models = read_models(*m);
 
     physics::TableSpec spec = *physics::table_preset("9ft");
@@ -75,7 +76,7 @@ SimulateInput read_input(const JsonIn& doc) {
         throw BadInput("balls", "missing required field: give balls, or rack to rack a game");
 
     if (auto s = doc.find("strike")) {
-        in.stroke = read_stroke(*s);
+        in.stroke = cli::read_stroke(*s);
         if (balls) check_strikable(doc, in.balls);  // a rack's cue ball is always at rest
     }
 

@@ -3,14 +3,12 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <set>
-#include <vector>
 
 namespace game {
 
 LoadError::LoadError(std::string path, const std::string& message)
-    : std::runtime_error(fmt::format("{}: {}", path, message)),
-      path_(std::move(path)),
+    : std::runtime_error(fmt::format("{}: {}", path.empty() ? "input" : path, message)),
+      path_(path.empty() ? "input" : std::move(path)),
       detail_(message) {}
 
 namespace {
@@ -24,107 +22,49 @@ std::string type_name(const nlohmann::json& v) {
     return "an object";
 }
 
-std::string one_line(std::string s) {
-    for (char& c : s)
-        if (c == '\n' || c == '\r' || c == '\t') c = ' ';
-    return s;
+std::string key_list(std::initializer_list<std::initializer_list<std::string_view>> lists) {
+    std::string list;
+    for (auto keys : lists)
+        for (std::string_view k : keys) list += (list.empty() ? "" : ", ") + std::string(k);
+    return list;
 }
-
-/// Follows the parser's position so that a key given twice in one object is reported by its
-/// path (nlohmann keeps only the last one, which would hide the first).
-class DuplicateKeyCheck {
-  public:
-    explicit DuplicateKeyCheck(std::string root) : root_(std::move(root)) {}
-
-    bool operator()(int /*depth*/, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
-        using E = nlohmann::json::parse_event_t;
-        switch (event) {
-            case E::object_start:
-            case E::array_start:
-                if (!frames_.empty() && !frames_.back().object) ++frames_.back().index;
-                frames_.push_back({event == E::object_start, {}, {}, -1});
-                break;
-            case E::object_end:
-            case E::array_end:
-                if (!frames_.empty()) frames_.pop_back();
-                break;
-            case E::key: {
-                Frame& f = frames_.back();
-                f.key = parsed.get<std::string>();
-                if (!f.keys.insert(f.key).second)
-                    throw LoadError(path(), "field given twice in one object");
-                break;
-            }
-            case E::value:
-                if (!frames_.empty() && !frames_.back().object) ++frames_.back().index;
-                break;
-        }
-        return true;
-    }
-
-  private:
-    struct Frame {
-        bool object;
-        std::set<std::string> keys;
-        std::string key;
-        long index;
-    };
-
-    std::string path() const {
-        std::string p = root_;
-        for (const Frame& f : frames_) p += f.object ? "." + f.key : fmt::format("[{}]", f.index);
-        return p;
-    }
-
-    std::string root_;
-    std::vector<Frame> frames_;
-};
 
 }  // namespace
-
-nlohmann::json parse_save_document(const std::string& text, const std::string& root) {
-    try {
-        return nlohmann::json::parse(text, DuplicateKeyCheck{root});
-    } catch (const nlohmann::json::exception& e) {
-        std::string what = e.what();
-        auto pos = what.find("] ");
-        throw LoadError(
-            root, one_line(fmt::format("not a valid JSON document ({})",
-                                       pos == std::string::npos ? what : what.substr(pos + 2))));
-    }
-}
 
 void Field::fail(const std::string& message) const {
     throw LoadError(path_, message);
 }
 
 std::string Field::child(std::string_view key) const {
-    return fmt::format("{}.{}", path_, key);
+    return path_.empty() ? std::string(key) : fmt::format("{}.{}", path_, key);
 }
 
-void Field::expect_object(std::initializer_list<std::string_view> required,
-                          std::initializer_list<std::string_view> optional) const {
+void Field::expect_object(std::initializer_list<std::string_view> allowed) const {
+    require_fields({}, allowed);
+}
+
+void Field::require_fields(std::initializer_list<std::string_view> required,
+                           std::initializer_list<std::string_view> optional) const {
     if (!value_->is_object()) fail(fmt::format("expected an object, got {}", type_name(*value_)));
     for (const auto& [key, _] : value_->items()) {
         bool known = false;
-        for (std::string_view k : required) known = known || key == k;
-        for (std::string_view k : optional) known = known || key == k;
-        if (!known) {
-            std::string list;
-            for (auto keys : {required, optional})
-                for (std::string_view k : keys) list += (list.empty() ? "" : ", ") + std::string(k);
-            throw LoadError(child(key), fmt::format("unknown field (expected here: {})", list));
-        }
+        for (auto keys : {required, optional})
+            for (std::string_view k : keys) known = known || key == k;
+        if (!known)
+            throw LoadError(child(key), fmt::format("unknown field (allowed here: {})",
+                                                    key_list({required, optional})));
     }
     for (std::string_view k : required)
-        if (!value_->contains(k)) throw LoadError(child(k), "missing field");
+        if (!value_->contains(k)) throw LoadError(child(k), "missing field: add it");
+}
+
+bool Field::has(std::string_view key) const {
+    return value_->is_object() && value_->contains(key);
 }
 
 Field Field::at(std::string_view key) const {
-    if (!value_->is_object()) fail(fmt::format("expected an object, got {}", type_name(*value_)));
-    auto it = value_->find(key);
-    if (it == value_->end()) throw LoadError(child(key), "missing field");
-    return Field(*it, child(key));
+    if (std::optional<Field> f = find(key)) return *f;
+    throw LoadError(child(key), "missing field: add it");
 }
 
 std::optional<Field> Field::find(std::string_view key) const {
@@ -158,14 +98,36 @@ double Field::number_in(double lo, double hi) const {
     return v;
 }
 
-std::int64_t Field::integer_in(std::int64_t lo, std::int64_t hi) const {
+double Field::positive() const {
+    const double v = number();
+    if (!(v > 0)) fail(fmt::format("{} is out of range: must be greater than 0", v));
+    return v;
+}
+
+double Field::positive_up_to(double hi) const {
+    const double v = number();
+    if (!(v > 0) || v > hi)
+        fail(fmt::format("{} is out of range: must be greater than 0 and at most {}", v, hi));
+    return v;
+}
+
+std::int64_t Field::integer() const {
+    if (value_->is_number_float()) {
+        // A whole number written with a fraction part (3.0) is the integer it names.
+        const double d = value_->get<double>();
+        if (d != std::floor(d)) fail("expected an integer, got a number with a fraction");
+        if (!(std::fabs(d) < 9.0e15)) fail("integer is too large");
+        return static_cast<std::int64_t>(d);
+    }
     if (!value_->is_number_integer())
-        fail(fmt::format("expected an integer, got {}", value_->is_number_float()
-                                                            ? "a number with a fraction"
-                                                            : type_name(*value_)));
+        fail(fmt::format("expected an integer, got {}", type_name(*value_)));
     if (value_->is_number_unsigned() && value_->get<std::uint64_t>() > std::uint64_t(INT64_MAX))
-        fail(fmt::format("integer is out of range: must be from {} to {}", lo, hi));
-    const std::int64_t v = value_->get<std::int64_t>();
+        fail("integer is too large");
+    return value_->get<std::int64_t>();
+}
+
+std::int64_t Field::integer_in(std::int64_t lo, std::int64_t hi) const {
+    const std::int64_t v = integer();
     if (v < lo || v > hi) fail(fmt::format("{} is out of range: must be from {} to {}", v, lo, hi));
     return v;
 }
@@ -186,6 +148,16 @@ bool Field::boolean() const {
 std::string Field::string() const {
     if (!value_->is_string()) fail(fmt::format("expected a string, got {}", type_name(*value_)));
     return value_->get<std::string>();
+}
+
+std::string Field::one_of(std::initializer_list<std::string_view> choices) const {
+    const std::string s = string();
+    std::string list;
+    for (std::string_view c : choices) {
+        if (s == c) return s;
+        list += (list.empty() ? "\"" : ", \"") + std::string(c) + "\"";
+    }
+    fail(fmt::format("unknown value \"{}\" (expected one of {})", s, list));
 }
 
 }  // namespace game

@@ -8,13 +8,12 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <system_error>
 
 #include "game/atomic_file.hpp"
 #include "game/json_field.hpp"
 #include "game/session.hpp"
+#include "game/text_file.hpp"
 
 namespace game {
 
@@ -50,6 +49,14 @@ bool write_new_file(const std::filesystem::path& path, const std::string& text,
 }  // namespace
 
 void write_file_atomically(const std::filesystem::path& path, const std::string& text) {
+    // A directory, a FIFO or a device where the file should be is the user's: never replace it.
+    std::error_code exists;
+    const std::filesystem::file_status target = std::filesystem::status(path, exists);
+    if (!exists && std::filesystem::exists(target) && !std::filesystem::is_regular_file(target))
+        throw std::runtime_error(
+            fmt::format("cannot save to {}: it is there and is not a regular file (move it away "
+                        "to save here)",
+                        path.string()));
     const std::filesystem::path tmp = temp_beside(path);
     std::string error;
     if (!write_new_file(tmp, text, error)) {
@@ -79,19 +86,7 @@ void Session::save_file(const std::filesystem::path& path) const {
 }
 
 Session Session::load_file(const std::filesystem::path& path) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec))
-        throw LoadError(path.string(), "is a directory, not a session file");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw LoadError(path.string(), "cannot open the file: check its name and permissions");
-    std::string text;
-    try {
-        text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    } catch (const std::exception& e) {
-        throw LoadError(path.string(), fmt::format("cannot read the file ({})", e.what()));
-    }
-    if (in.bad()) throw LoadError(path.string(), "cannot read the file");
-    return from_json(text);
+    return from_json(read_regular_file(path));
 }
 
 }  // namespace game

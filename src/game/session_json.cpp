@@ -109,81 +109,16 @@ ordered_json record_json(const ShotRecord& r, bool keep_events) {
 
 // ---- Reading
 
-physics::TableSpec read_table(const Field& f, double ball_radius) {
-    f.expect_object({"length", "width", "corner_mouth", "side_mouth", "corner_facing_deg",
-                     "side_facing_deg", "jaw_nose_radius", "cushion_height", "corner_shelf",
-                     "side_shelf", "jaw_depth", "pockets"});
-    constexpr double max_size = 100.0;  // (unit: m)
-    auto positive = [&](std::string_view key) {
-        Field v = f.at(key);
-        const double x = v.number_in(0.0, max_size);
-        if (!(x > 0.0)) v.fail("must be greater than 0");
-        return x;
-    };
-    auto angle = [&](std::string_view key) {
-        Field v = f.at(key);
-        const double x = v.number_in(0.0, 180.0);
-        if (!(x > 0.0 && x < 180.0)) v.fail("must be between 0 and 180 degrees");
-        return x;
-    };
-    physics::TableSpec t;
-    t.length = positive("length");
-    t.width = positive("width");
-    t.corner_mouth = positive("corner_mouth");
-    t.side_mouth = positive("side_mouth");
-    t.corner_facing_deg = angle("corner_facing_deg");
-    t.side_facing_deg = angle("side_facing_deg");
-    t.jaw_nose_radius = f.at("jaw_nose_radius").number_in(0.0, max_size);
-    t.cushion_height = positive("cushion_height");
-    t.corner_shelf = f.at("corner_shelf").number_in(0.0, max_size);
-    t.side_shelf = f.at("side_shelf").number_in(0.0, max_size);
-    t.jaw_depth = positive("jaw_depth");
-    t.pockets = f.at("pockets").boolean();
-    if (std::optional<std::string> e = physics::validate_table_spec(t, ball_radius)) f.fail(*e);
-    return t;
-}
-
-physics::Params read_params(const Field& f) {
-    f.expect_object({"ball_radius", "ball_mass", "gravity", "mu_slide", "mu_roll", "spin_decel",
-                     "e_ball", "mu_ball", "e_cushion", "mu_cushion", "cue_mass", "cue_tip_e",
-                     "cue_endmass", "miscue_limit"});
-    auto positive_up_to = [&](std::string_view key, double hi) {
-        Field v = f.at(key);
-        const double x = v.number_in(0.0, hi);
-        if (!(x > 0.0)) v.fail("must be greater than 0");
-        return x;
-    };
-    auto in = [&](std::string_view key, double lo, double hi) {
-        return f.at(key).number_in(lo, hi);
-    };
-    physics::Params p;
-    p.ball_radius = positive_up_to("ball_radius", 0.5);
-    p.ball_mass = positive_up_to("ball_mass", 100.0);
-    p.gravity = positive_up_to("gravity", 1000.0);
-    p.mu_slide = in("mu_slide", 0.0, 10.0);
-    p.mu_roll = in("mu_roll", 0.0, 10.0);
-    p.spin_decel = positive_up_to("spin_decel", 10000.0);
-    p.e_ball = in("e_ball", 0.0, 1.0);
-    if (Field mu = f.at("mu_ball"); !mu.is_null()) p.mu_ball = mu.number_in(0.0, 10.0);
-    p.e_cushion = in("e_cushion", 0.0, 1.0);
-    p.mu_cushion = in("mu_cushion", 0.0, 10.0);
-    p.cue_mass = positive_up_to("cue_mass", 100.0);
-    p.cue_tip_e = in("cue_tip_e", 0.0, 1.0);
-    p.cue_endmass = positive_up_to("cue_endmass", 100.0);
-    p.miscue_limit = positive_up_to("miscue_limit", 1.0);
-    return p;
-}
-
 Config read_config(const Field& f) {
-    f.expect_object(
+    f.require_fields(
         {"game", "options", "table", "params", "players", "seed", "first_breaker", "keep_events"});
     Config c;
     c.game = f.at("game").name_of<rules::Game>();
-    c.options = read_options(f.at("options"));
-    c.params = read_params(f.at("params"));
-    c.table = read_table(f.at("table"), c.params.ball_radius);
+    c.options = read_options(f.at("options"), Fields::all);
+    c.params = read_params(f.at("params"), Fields::all);
+    c.table = read_table(f.at("table"), c.params.ball_radius, Fields::all);
     Field players = f.at("players");
-    players.expect_object({"A", "B"});
+    players.require_fields({"A", "B"});
     for (rules::Player p : {rules::Player::A, rules::Player::B}) {
         Field n = players.at(name(p));
         std::string s = n.string();
@@ -202,7 +137,7 @@ int read_optional_pocket(const Field& f) {
 }
 
 ShotSummary read_summary(const Field& f, rules::Game game) {
-    f.expect_object(
+    f.require_fields(
         {"first_contact", "down", "cushions", "ball_contacts", "events", "duration", "truncated"});
     ShotSummary s;
     const int highest = rules::highest_ball(game);
@@ -211,7 +146,7 @@ ShotSummary read_summary(const Field& f, rules::Game game) {
     Field down = f.at("down");
     for (std::size_t i = 0; i < down.array_size(); ++i) {
         Field d = down.at(i);
-        d.expect_object({"ball", "pocket"});
+        d.require_fields({"ball", "pocket"});
         const int ball = static_cast<int>(d.at("ball").integer_in(0, highest));
         for (const BallDown& earlier : s.down)
             if (earlier.ball == ball)
@@ -228,12 +163,12 @@ ShotSummary read_summary(const Field& f, rules::Game game) {
 
 ShotRecord read_record(const Field& f, const TableContext& t, bool keep_events, int rack_number) {
     if (keep_events)
-        f.expect_object({"rack", "before", "stroke", "summary", "events", "verdict", "choice"});
+        f.require_fields({"rack", "before", "stroke", "summary", "events", "verdict", "choice"});
     else
-        f.expect_object({"rack", "before", "stroke", "summary", "verdict", "choice"});
+        f.require_fields({"rack", "before", "stroke", "summary", "verdict", "choice"});
     ShotRecord r;
     r.rack = static_cast<int>(f.at("rack").integer_in(0, rack_number));
-    r.before = read_state(f.at("before"), t);
+    r.before = read_state(f.at("before"), t, Fields::all);
     if (!r.before.positions.count(0))
         f.at("before")
             .at("positions")
@@ -243,7 +178,7 @@ ShotRecord read_record(const Field& f, const TableContext& t, bool keep_events, 
     if (keep_events) {
         Field events = f.at("events");
         for (std::size_t i = 0; i < events.array_size(); ++i)
-            r.events.push_back(read_event(events.at(i), t.game));
+            r.events.push_back(read_event(events.at(i), t.game, Fields::all));
     }
     r.verdict = read_verdict(f.at("verdict"), t);
     if (Field c = f.at("choice"); !c.is_null()) {
@@ -281,78 +216,103 @@ std::string Session::to_json() const {
     return j.dump() + "\n";
 }
 
-Session Session::from_json(const std::string& text) {
-    const nlohmann::json doc = parse_save_document(text, "session");
-    const Field root(doc, "session");
-    if (!doc.is_object()) root.fail("not a Coolaaber session: expected a JSON object");
-    {
-        std::optional<Field> format = root.find("format");
-        if (!format || !format->raw().is_string() || format->string() != format_name)
-            throw LoadError(
-                "session.format",
-                fmt::format("not a Coolaaber session file (expected \"format\": \"{}\")",
-                            format_name));
-        Field version = root.at("version");
-        if (version.integer_in(1, 1000000) != format_version)
-            version.fail(fmt::format("version {} is not supported (this build reads version {})",
-                                     version.raw().dump(), format_version));
-    }
-    root.expect_object({"format", "version", "config", "game_number", "rack_number", "score",
-                        "state", "pending", "winner", "pocketed", "history"});
+namespace {
 
-    Config config = read_config(root.at("config"));
-    Session s(std::move(config), Restored{});
+// `format` and `version`: a Coolaaber session of the version this build reads.
+void check_format(const Field& root) {
+    if (!root.raw().is_object()) root.fail("not a Coolaaber session: expected a JSON object");
+    std::optional<Field> format = root.find("format");
+    if (!format || !format->raw().is_string() || format->string() != format_name)
+        throw LoadError(
+            "session.format",
+            fmt::format("not a Coolaaber session file (expected \"format\": \"{}\")", format_name));
+    Field version = root.at("version");
+    if (version.integer_in(1, 1000000) != format_version)
+        version.fail(fmt::format("version {} is not supported (this build reads version {})",
+                                 version.raw().dump(), format_version));
+}
+
+std::array<int, 2> read_score(const Field& f) {
+    f.require_fields({"A", "B"});
+    std::array<int, 2> score{};
+    for (rules::Player p : {rules::Player::A, rules::Player::B})
+        score[rules::index(p)] = static_cast<int>(f.at(rules::name(p)).integer_in(0, max_count));
+    return score;
+}
+
+// `pending`: null, or a verdict offering a choice, with the table as `state` shows it.
+std::optional<rules::Verdict> read_pending(const Field& f, const TableContext& t,
+                                           const rules::GameState& state, bool over) {
+    if (f.is_null()) return std::nullopt;
+    if (over) f.fail("must be null: the game is over");
+    rules::Verdict v = read_verdict(f, t);
+    if (!v.choice) f.at("choice").fail("a pending verdict offers a choice");
+    if (game::to_json(v.state) != game::to_json(state))
+        f.at("state").fail(
+            "differs from session.state (a pending choice shows the table as it lies)");
+    return v;
+}
+
+// `pocketed`: every object ball of the game not on the table, once each.
+std::vector<Pocketed> read_pocketed(const Field& f, const TableContext& t,
+                                    const rules::GameState& state) {
+    std::vector<Pocketed> pocketed;
+    const int highest = rules::highest_ball(t.game);
+    for (std::size_t i = 0; i < f.array_size(); ++i) {
+        Field item = f.at(i);
+        item.require_fields({"ball", "pocket", "by"});
+        Field ball = item.at("ball");
+        const int id = static_cast<int>(ball.integer_in(-1000, 1000));
+        if (id < 1 || id > highest)
+            ball.fail(fmt::format("ball {} does not exist (the object balls of {} are 1 to {})", id,
+                                  rules::name(t.game), highest));
+        if (state.has(id))
+            ball.fail(fmt::format("ball {} is also on the table (session.state.on_table)", id));
+        for (const Pocketed& earlier : pocketed)
+            if (earlier.ball == id) ball.fail(fmt::format("ball {} is listed twice", id));
+        pocketed.push_back(
+            {id, read_optional_pocket(item.at("pocket")), item.at("by").name_of<rules::Player>()});
+    }
+    for (int id = 1; id <= highest; ++id) {
+        const bool down = std::any_of(pocketed.begin(), pocketed.end(),
+                                      [id](const Pocketed& p) { return p.ball == id; });
+        if (!down && !state.has(id))
+            f.fail(fmt::format("ball {} is neither on the table nor pocketed", id));
+    }
+    return pocketed;
+}
+
+// `history`: the shots, none after one that ended the game.
+std::vector<ShotRecord> read_history(const Field& f, const TableContext& t, bool keep_events,
+                                     int rack_number) {
+    std::vector<ShotRecord> history;
+    for (std::size_t i = 0; i < f.array_size(); ++i)
+        history.push_back(read_record(f.at(i), t, keep_events, rack_number));
+    for (std::size_t i = 0; i + 1 < history.size(); ++i)
+        if (history[i].verdict.game_over)
+            f.at(i).at("verdict").fail("the game ended here, yet more shots follow");
+    return history;
+}
+
+}  // namespace
+
+Session Session::from_json(const std::string& text) {
+    const nlohmann::json doc = parse_document(text, "session");
+    const Field root(doc, "session");
+    check_format(root);
+    root.require_fields({"format", "version", "config", "game_number", "rack_number", "score",
+                         "state", "pending", "winner", "pocketed", "history"});
+
+    Session s(read_config(root.at("config")), Restored{});
     const TableContext t{s.config_.game, s.table_, s.config_.params};
     s.game_number_ = static_cast<int>(root.at("game_number").integer_in(0, max_count));
     s.rack_number_ = static_cast<int>(root.at("rack_number").integer_in(0, max_count));
-    Field score = root.at("score");
-    score.expect_object({"A", "B"});
-    for (rules::Player p : {rules::Player::A, rules::Player::B})
-        s.score_[rules::index(p)] =
-            static_cast<int>(score.at(rules::name(p)).integer_in(0, max_count));
-
+    s.score_ = read_score(root.at("score"));
     if (Field w = root.at("winner"); !w.is_null()) s.winner_ = w.name_of<rules::Player>();
-    s.state_ = read_state(root.at("state"), t, s.winner_.has_value());
-
-    if (Field p = root.at("pending"); !p.is_null()) {
-        if (s.winner_) p.fail("must be null: the game is over");
-        rules::Verdict v = read_verdict(p, t);
-        if (!v.choice) p.at("choice").fail("a pending verdict offers a choice");
-        if (game::to_json(v.state) != game::to_json(s.state_))
-            p.at("state").fail(
-                "differs from session.state (a pending choice shows the table as it lies)");
-        s.pending_ = std::move(v);
-    }
-
-    Field pocketed = root.at("pocketed");
-    for (std::size_t i = 0; i < pocketed.array_size(); ++i) {
-        Field item = pocketed.at(i);
-        item.expect_object({"ball", "pocket", "by"});
-        Field ball = item.at("ball");
-        const int id = static_cast<int>(ball.integer_in(-1000, 1000));
-        if (id < 1 || id > rules::highest_ball(t.game))
-            ball.fail(fmt::format("ball {} does not exist (the object balls of {} are 1 to {})", id,
-                                  rules::name(t.game), rules::highest_ball(t.game)));
-        if (s.state_.has(id))
-            ball.fail(fmt::format("ball {} is also on the table (session.state.on_table)", id));
-        for (const Pocketed& earlier : s.pocketed_)
-            if (earlier.ball == id) ball.fail(fmt::format("ball {} is listed twice", id));
-        s.pocketed_.push_back(
-            {id, read_optional_pocket(item.at("pocket")), item.at("by").name_of<rules::Player>()});
-    }
-    for (int id = 1; id <= rules::highest_ball(t.game); ++id) {
-        const bool down = std::any_of(s.pocketed_.begin(), s.pocketed_.end(),
-                                      [id](const Pocketed& p) { return p.ball == id; });
-        if (!down && !s.state_.has(id))
-            pocketed.fail(fmt::format("ball {} is neither on the table nor pocketed", id));
-    }
-
-    Field history = root.at("history");
-    for (std::size_t i = 0; i < history.array_size(); ++i)
-        s.history_.push_back(read_record(history.at(i), t, s.config_.keep_events, s.rack_number_));
-    for (std::size_t i = 0; i + 1 < s.history_.size(); ++i)
-        if (s.history_[i].verdict.game_over)
-            history.at(i).at("verdict").fail("the game ended here, yet more shots follow");
+    s.state_ = read_state(root.at("state"), t, Fields::all, s.winner_.has_value());
+    s.pending_ = read_pending(root.at("pending"), t, s.state_, s.winner_.has_value());
+    s.pocketed_ = read_pocketed(root.at("pocketed"), t, s.state_);
+    s.history_ = read_history(root.at("history"), t, s.config_.keep_events, s.rack_number_);
     if (s.winner_ && (s.history_.empty() || !s.history_.back().verdict.game_over))
         root.at("winner").fail("the game is over, but the last shot of the history did not end it");
     if (s.pending_ &&

@@ -3,11 +3,14 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <limits>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
 
 #include "physics/layout.hpp"
+#include "physics/table.hpp"
 #include "rules/names.hpp"
 
 namespace game {
@@ -37,13 +40,13 @@ int key_ball(rules::Game game) {
 /// An object ball of the game (or the cue ball, when `cue_ok`).
 int read_ball(const Field& f, rules::Game game, bool cue_ok) {
     const int highest = rules::highest_ball(game);
-    const int id = static_cast<int>(f.integer_in(-1000, 1000));
+    const std::int64_t id = f.integer();
     if (id < (cue_ok ? 0 : 1) || id > highest) {
         if (id == 0) f.fail("the cue ball (0) is not allowed here: an object ball is expected");
         f.fail(fmt::format("ball {} does not exist (the balls of {} are {} to {})", id, name(game),
                            cue_ok ? 0 : 1, highest));
     }
-    return id;
+    return static_cast<int>(id);
 }
 
 std::optional<rules::Player> read_optional_player(const Field& f) {
@@ -53,7 +56,7 @@ std::optional<rules::Player> read_optional_player(const Field& f) {
 
 std::optional<rules::Group> read_groups(const Field& f) {
     if (f.is_null()) return std::nullopt;
-    f.expect_object({"A", "B"});
+    f.require_fields({"A", "B"});
     const rules::Group a = f.at("A").name_of<rules::Group>();
     const rules::Group b = f.at("B").name_of<rules::Group>();
     if (a == b) f.fail("the players must have different groups, or null for an open table");
@@ -62,7 +65,7 @@ std::optional<rules::Group> read_groups(const Field& f) {
 
 template <typename Read>
 auto read_per_player(const Field& f, Read read) {
-    f.expect_object({"A", "B"});
+    f.require_fields({"A", "B"});
     return std::array{read(f.at("A")), read(f.at("B"))};
 }
 
@@ -92,7 +95,9 @@ rules::Call read_call(const Field& f, rules::Game game, const rules::GameState& 
                 f.string()));
         return rules::Call::safety();
     }
-    f.expect_object({"ball", "pocket"});
+    if (!f.raw().is_object())
+        f.fail("expected null, \"safety\" or {\"ball\": 5, \"pocket\": \"N\"}");
+    f.require_fields({"ball", "pocket"});
     Field ball = f.at("ball");
     const int id = read_ball(ball, game, false);
     if (!s.has(id)) ball.fail(fmt::format("ball {} is not on the table", id));
@@ -101,6 +106,7 @@ rules::Call read_call(const Field& f, rules::Game game, const rules::GameState& 
     return rules::Call::ball_in(id, read_pocket(f.at("pocket")));
 }
 
+/// A positions key: a ball id written as a plain decimal integer.
 std::optional<int> id_from_key(const std::string& key) {
     if (key.empty() || key.size() > 2) return std::nullopt;
     if (!std::all_of(key.begin(), key.end(), [](char c) { return c >= '0' && c <= '9'; }))
@@ -110,7 +116,7 @@ std::optional<int> id_from_key(const std::string& key) {
 }
 
 std::map<int, physics::Vec2> read_positions(const Field& f, const TableContext& t,
-                                            const rules::GameState& s) {
+                                            const rules::GameState& s, Fields fields) {
     if (!f.raw().is_object())
         f.fail("expected an object of positions by ball id, e.g. {\"0\": [0.5, 0.6]}");
     std::map<int, physics::Vec2> positions;
@@ -131,11 +137,13 @@ std::map<int, physics::Vec2> read_positions(const Field& f, const TableContext& 
         balls.push_back(b);
         keys.push_back(key);
     }
-    for (int id : s.on_table)
-        if (!positions.count(id))
-            f.fail(fmt::format("ball {} is on the table but has no position", id));
-    if (s.cue_ball == rules::CueBall::on_table && !positions.count(0))
-        f.fail("the cue ball is on the table but has no position (\"0\")");
+    if (fields == Fields::all) {
+        for (int id : s.on_table)
+            if (!positions.count(id))
+                f.fail(fmt::format("ball {} is on the table but has no position", id));
+        if (s.cue_ball == rules::CueBall::on_table && !positions.count(0))
+            f.fail("the cue ball is on the table but has no position (\"0\")");
+    }
     if (std::optional<physics::LayoutError> e = physics::validate_layout(t.table, t.params, balls))
         throw LoadError(f.path() + "." + keys[e->index], e->message);
     auto cue = positions.find(0);
@@ -151,7 +159,7 @@ std::map<int, physics::Vec2> read_positions(const Field& f, const TableContext& 
 
 std::optional<rules::Choice> read_choice(const Field& f) {
     if (f.is_null()) return std::nullopt;
-    f.expect_object({"by", "options"});
+    f.require_fields({"by", "options"});
     rules::Choice c;
     c.by = f.at("by").name_of<rules::Player>();
     Field options = f.at("options");
@@ -326,12 +334,14 @@ ordered_json to_json(const physics::Event& event) {
 // ---- Reading
 
 physics::Vec2 read_vec2(const Field& f) {
-    if (f.array_size() != 2) f.fail("expected [x, y]: an array of 2 numbers");
+    if (!f.raw().is_array() || f.raw().size() != 2)
+        f.fail("expected [x, y]: an array of 2 numbers");
     return {f.at(std::size_t{0}).number(), f.at(std::size_t{1}).number()};
 }
 
 physics::Vec3 read_vec3(const Field& f) {
-    if (f.array_size() != 3) f.fail("expected [x, y, z]: an array of 3 numbers");
+    if (!f.raw().is_array() || f.raw().size() != 3)
+        f.fail("expected [x, y, z]: an array of 3 numbers");
     return {f.at(std::size_t{0}).number(), f.at(std::size_t{1}).number(),
             f.at(std::size_t{2}).number()};
 }
@@ -343,25 +353,165 @@ int read_pocket(const Field& f) {
         "unknown pocket \"{}\" (expected one of \"SW\", \"S\", \"SE\", \"NW\", \"N\", \"NE\")", s));
 }
 
-rules::Options read_options(const Field& f) {
-    f.expect_object({"call_shots", "eight_on_break", "foul_ball_in_hand", "scratch_on_eight_loses",
-                     "groups_on_break", "rail_after_contact"});
+namespace {
+
+// The accepted range of a physical parameter: what real tables use, widened by a factor of ten
+// or more, and within what the engine represents (a friction of 1e-300 makes the times v/(μg)
+// overflow). `zero_ok`: exactly 0 is accepted too (no friction at all, a special case of the
+// engine). Pinned by tests/cli/params_range_test.cpp, which runs each end.
+struct ParamRange {
+    double lo, hi;
+    bool zero_ok = false;
+};
+
+double read_param(const Field& v, ParamRange r) {
+    const double x = v.number();
+    if ((r.zero_ok && x == 0.0) || (x >= r.lo && x <= r.hi)) return x;
+    v.fail(fmt::format("{} is out of range: must be {}from {} to {}", x, r.zero_ok ? "0 or " : "",
+                       r.lo, r.hi));
+}
+
+}  // namespace
+
+namespace {
+
+constexpr double max_table_size = 100.0;  // (unit: m) far beyond any table; keeps sums finite
+
+physics::TableSpec preset(const Field& f) {
+    const std::string name = f.one_of({"7ft", "8ft", "9ft", "unbounded"});
+    std::optional<physics::TableSpec> spec = physics::table_preset(name);
+    if (!spec) f.fail(fmt::format("the engine has no table preset \"{}\"", name));
+    return *spec;
+}
+
+// The fields of a table object over `spec`: with `Fields::all` every one must be given.
+void read_table_fields(const Field& f, physics::TableSpec& spec, Fields fields) {
+    const std::initializer_list<std::string_view> keys = {
+        "length",          "width",           "corner_mouth",   "side_mouth",   "corner_facing_deg",
+        "side_facing_deg", "jaw_nose_radius", "cushion_height", "corner_shelf", "side_shelf",
+        "jaw_depth",       "pockets"};
+    if (fields == Fields::all)
+        f.require_fields(keys, {"preset"});
+    else
+        f.require_fields(
+            {}, {"preset", "length", "width", "corner_mouth", "side_mouth", "corner_facing_deg",
+                 "side_facing_deg", "jaw_nose_radius", "cushion_height", "corner_shelf",
+                 "side_shelf", "jaw_depth", "pockets"});
+    if (auto p = f.find("preset")) spec = preset(*p);
+    auto set = [&](std::string_view key, double& field, auto read) {
+        if (std::optional<Field> v = f.find(key)) field = read(*v);
+    };
+    auto length = [](const Field& v) { return v.positive_up_to(max_table_size); };
+    auto depth = [](const Field& v) { return v.number_in(0.0, max_table_size); };
+    auto angle = [](const Field& v) {
+        const double a = v.number();
+        if (!(a > 0.0 && a < 180.0))
+            v.fail(fmt::format("{} is out of range: must be between 0 and 180 degrees", a));
+        return a;
+    };
+    set("length", spec.length, length);
+    set("width", spec.width, length);
+    set("corner_mouth", spec.corner_mouth, length);
+    set("side_mouth", spec.side_mouth, length);
+    set("corner_facing_deg", spec.corner_facing_deg, angle);
+    set("side_facing_deg", spec.side_facing_deg, angle);
+    set("jaw_nose_radius", spec.jaw_nose_radius, depth);
+    set("cushion_height", spec.cushion_height, length);
+    set("corner_shelf", spec.corner_shelf, depth);
+    set("side_shelf", spec.side_shelf, depth);
+    set("jaw_depth", spec.jaw_depth, length);
+    if (auto p = f.find("pockets")) spec.pockets = p->boolean();
+}
+
+}  // namespace
+
+physics::TableSpec read_table(const Field& f, double ball_radius, Fields fields) {
+    physics::TableSpec spec;
+    if (f.raw().is_string() && fields == Fields::required) {
+        spec = preset(f);
+    } else if (f.raw().is_object()) {
+        read_table_fields(f, spec, fields);
+    } else {
+        f.fail(
+            "expected a preset name (\"7ft\", \"8ft\", \"9ft\", \"unbounded\") or an object like "
+            "{\"preset\": \"9ft\", \"length\": 2.54}");
+    }
+    if (std::optional<std::string> problem = physics::validate_table_spec(spec, ball_radius)) {
+        // The engine's message starts with the field name ("corner_mouth: ..."): point at that
+        // field when the document gave it, else at the table as a whole.
+        const std::string& message = *problem;
+        const auto colon = message.find(": ");
+        if (colon != std::string::npos && f.raw().is_object()) {
+            const std::string field = message.substr(0, colon);
+            if (f.has(field)) f.at(field).fail(message.substr(colon + 2));
+        }
+        f.fail(fmt::format("{} (for balls of radius R = {} m)", message, ball_radius));
+    }
+    return spec;
+}
+
+physics::Params read_params(const Field& f, Fields fields) {
+    const std::initializer_list<std::string_view> keys = {
+        "ball_radius", "ball_mass", "gravity",     "mu_slide",    "mu_roll",
+        "spin_decel",  "e_ball",    "mu_ball",     "e_cushion",   "mu_cushion",
+        "cue_mass",    "cue_tip_e", "cue_endmass", "miscue_limit"};
+    if (fields == Fields::all)
+        f.require_fields(keys);
+    else
+        f.expect_object(keys);
+    physics::Params p;
+    auto set = [&](std::string_view key, double& field, ParamRange range) {
+        if (std::optional<Field> v = f.find(key)) field = read_param(*v, range);
+    };
+    set("ball_radius", p.ball_radius, {0.01, 0.05});
+    set("ball_mass", p.ball_mass, {0.01, 10.0});
+    set("gravity", p.gravity, {0.1, 100.0});
+    set("mu_slide", p.mu_slide, {0.001, 1.0, true});
+    set("mu_roll", p.mu_roll, {0.0001, 1.0, true});
+    set("spin_decel", p.spin_decel, {0.01, 1000.0});
+    set("e_ball", p.e_ball, {0.0, 1.0});
+    if (std::optional<Field> v = f.find("mu_ball"))
+        p.mu_ball = v->is_null() ? std::nullopt : std::optional(read_param(*v, {0.0, 1.0}));
+    set("e_cushion", p.e_cushion, {0.0, 1.0});
+    set("mu_cushion", p.mu_cushion, {0.0, 1.0});
+    set("cue_mass", p.cue_mass, {0.1, 10.0});
+    set("cue_tip_e", p.cue_tip_e, {0.0, 1.0});
+    set("cue_endmass", p.cue_endmass, {0.001, 1.0});
+    set("miscue_limit", p.miscue_limit, {0.01, 1.0});
+    return p;
+}
+
+rules::Options read_options(const Field& f, Fields fields) {
+    const std::initializer_list<std::string_view> keys = {
+        "call_shots",      "eight_on_break",    "foul_ball_in_hand", "scratch_on_eight_loses",
+        "groups_on_break", "rail_after_contact"};
+    if (fields == Fields::all)
+        f.require_fields(keys);
+    else
+        f.expect_object(keys);
     rules::Options o;
-    o.call_shots = f.at("call_shots").name_of<rules::CallShots>();
-    o.eight_on_break = f.at("eight_on_break").name_of<rules::EightOnBreak>();
-    o.foul_ball_in_hand = f.at("foul_ball_in_hand").name_of<rules::FoulBallInHand>();
-    o.scratch_on_eight_loses = f.at("scratch_on_eight_loses").boolean();
-    o.groups_on_break = f.at("groups_on_break").boolean();
-    o.rail_after_contact = f.at("rail_after_contact").boolean();
+    if (auto v = f.find("call_shots")) o.call_shots = v->name_of<rules::CallShots>();
+    if (auto v = f.find("eight_on_break")) o.eight_on_break = v->name_of<rules::EightOnBreak>();
+    if (auto v = f.find("foul_ball_in_hand"))
+        o.foul_ball_in_hand = v->name_of<rules::FoulBallInHand>();
+    if (auto v = f.find("scratch_on_eight_loses")) o.scratch_on_eight_loses = v->boolean();
+    if (auto v = f.find("groups_on_break")) o.groups_on_break = v->boolean();
+    if (auto v = f.find("rail_after_contact")) o.rail_after_contact = v->boolean();
     return o;
 }
 
 namespace {
 
-rules::GameState read_state_impl(const Field& f, const TableContext& t, bool finished) {
+rules::GameState read_state_impl(const Field& f, const TableContext& t, Fields fields,
+                                 bool finished) {
     using rules::Shot;
-    f.expect_object({"shooter", "breaker", "shot", "groups", "on_table", "cue_ball", "call",
-                     "fouls_in_row", "warned", "positions"});
+    const std::initializer_list<std::string_view> required = {"shooter", "breaker", "shot",
+                                                              "on_table", "cue_ball"};
+    const std::initializer_list<std::string_view> optional = {"groups", "call", "fouls_in_row",
+                                                              "warned", "positions"};
+    f.require_fields(required, optional);
+    if (fields == Fields::all)
+        for (std::string_view k : optional) (void)f.at(k);
     rules::GameState s;
     s.shooter = f.at("shooter").name_of<rules::Player>();
     s.breaker = f.at("breaker").name_of<rules::Player>();
@@ -377,30 +527,32 @@ rules::GameState read_state_impl(const Field& f, const TableContext& t, bool fin
         shot.fail("a push-out is played with the cue ball where it lies (cue_ball \"on_table\")");
     if (s.shot == Shot::break_shot && s.cue_ball != rules::CueBall::in_hand_kitchen)
         cue.fail("on the break the cue ball is in hand in the kitchen: \"in_hand_kitchen\"");
-    Field groups = f.at("groups");
-    s.group_a = read_groups(groups);
-    if (s.group_a && t.game == rules::Game::nine_ball)
-        groups.fail("9-ball has no groups: use null");
-    if (s.group_a && s.shot == Shot::break_shot)
-        groups.fail("the table is open on the break: use null");
-    s.fouls_in_row = read_per_player(f.at("fouls_in_row"), [](const Field& v) {
-        return static_cast<int>(v.integer_in(0, max_fouls_in_row));
-    });
-    s.warned = read_per_player(f.at("warned"), [](const Field& v) { return v.boolean(); });
-    s.call = read_call(f.at("call"), t.game, s);
-    s.positions = read_positions(f.at("positions"), t, s);
+    if (std::optional<Field> groups = f.find("groups")) {
+        s.group_a = read_groups(*groups);
+        if (s.group_a && t.game == rules::Game::nine_ball)
+            groups->fail("9-ball has no groups: use null");
+        if (s.group_a && s.shot == Shot::break_shot)
+            groups->fail("the table is open on the break: use null");
+    }
+    if (auto v = f.find("fouls_in_row"))
+        s.fouls_in_row = read_per_player(
+            *v, [](const Field& n) { return static_cast<int>(n.integer_in(0, max_fouls_in_row)); });
+    if (auto v = f.find("warned"))
+        s.warned = read_per_player(*v, [](const Field& b) { return b.boolean(); });
+    if (auto v = f.find("call")) s.call = read_call(*v, t.game, s);
+    if (auto v = f.find("positions")) s.positions = read_positions(*v, t, s, fields);
     return s;
 }
 
 }  // namespace
 
-rules::GameState read_state(const Field& f, const TableContext& t, bool finished) {
-    return read_state_impl(f, t, finished);
+rules::GameState read_state(const Field& f, const TableContext& t, Fields fields, bool finished) {
+    return read_state_impl(f, t, fields, finished);
 }
 
 rules::Verdict read_verdict(const Field& f, const TableContext& t) {
-    f.expect_object({"foul", "fouls", "turn_passes", "next_shooter", "ball_in_hand", "groups",
-                     "respot", "choice", "game_over", "winner", "break", "state"});
+    f.require_fields({"foul", "fouls", "turn_passes", "next_shooter", "ball_in_hand", "groups",
+                      "respot", "choice", "game_over", "winner", "break", "state"});
     rules::Verdict v;
     v.foul = f.at("foul").boolean();
     Field fouls = f.at("fouls");
@@ -420,7 +572,7 @@ rules::Verdict read_verdict(const Field& f, const TableContext& t) {
     v.game_over = f.at("game_over").boolean();
     v.winner = read_optional_player(f.at("winner"));
     v.break_result = f.at("break").name_of<rules::BreakResult>();
-    v.state = read_state_impl(f.at("state"), t, v.game_over);
+    v.state = read_state_impl(f.at("state"), t, Fields::all, v.game_over);
     Field respot = f.at("respot");
     for (std::size_t i = 0; i < respot.array_size(); ++i) {
         const int id = read_ball(respot.at(i), t.game, false);
@@ -445,7 +597,7 @@ rules::Verdict read_verdict(const Field& f, const TableContext& t) {
 }
 
 physics::Stroke read_stroke(const Field& f) {
-    f.expect_object({"speed", "heading_deg", "side", "top", "elevation_deg"});
+    f.require_fields({"speed", "heading_deg", "side", "top", "elevation_deg"});
     physics::Stroke s;
     s.speed = f.at("speed").number_in(0.0, 20.0);
     s.heading_deg = f.at("heading_deg").number_in(-3600.0, 3600.0);
@@ -455,67 +607,103 @@ physics::Stroke read_stroke(const Field& f) {
     return s;
 }
 
-physics::Event read_event(const Field& f, rules::Game game) {
+namespace {
+
+// The fields of an event of `type` beyond time, type, balls, pos, vel and spin.
+std::vector<std::string_view> own_fields(physics::EventType type, const Field& f) {
     using physics::EventType;
-    f.expect_object({"time", "type", "balls", "pos", "vel", "spin"},
-                    {"speed", "cushion", "pocket_jaw", "pocket", "from", "to"});
-    physics::Event e;
-    e.time = f.at("time").number_in(0.0, 1e9);
-    e.type = read_event_type(f.at("type"));
-    const std::size_t count = e.type == EventType::ball_ball ? 2 : 1;
-    Field balls = f.at("balls");
-    if (balls.array_size() != count)
-        balls.fail(fmt::format("a {} event has {} ball{}", physics::to_string(e.type), count,
-                               count == 1 ? "" : "s"));
-    e.ball_count = static_cast<std::uint8_t>(count);
-    for (std::size_t k = 0; k < count; ++k) e.balls[k].id = read_ball(balls.at(k), game, true);
-    if (count == 2 && e.balls[0].id == e.balls[1].id) balls.fail("two different balls collide");
-
-    auto per_ball = [&](std::string_view key, auto read) {
-        Field list = f.at(key);
-        if (list.array_size() != count)
-            list.fail(
-                fmt::format("expected {} entr{}, one per ball", count, count == 1 ? "y" : "ies"));
-        for (std::size_t k = 0; k < count; ++k) read(k, list.at(k));
-    };
-    per_ball("pos", [&](std::size_t k, const Field& v) { e.balls[k].pos = read_vec2(v); });
-    per_ball("vel", [&](std::size_t k, const Field& v) { e.balls[k].vel = read_vec2(v); });
-    per_ball("spin", [&](std::size_t k, const Field& v) { e.balls[k].spin = read_vec3(v); });
-
-    // The type's own fields, and no other.
-    std::vector<std::string_view> own;
-    switch (e.type) {
+    switch (type) {
         case EventType::transition:
-            own = {"from", "to"};
-            e.from = read_motion(f.at("from"));
-            e.to = read_motion(f.at("to"));
-            break;
+            return {"from", "to"};
         case EventType::ball_ball:
-            own = {"speed"};
-            e.speed = f.at("speed").number_in(0.0, 1e6);
-            break;
+            return {"speed"};
         case EventType::cushion:
-            e.speed = f.at("speed").number_in(0.0, 1e6);
-            if (f.find("cushion")) {
-                own = {"speed", "cushion"};
-                e.rail = read_rail(f.at("cushion"));
-            } else {
-                own = {"speed", "pocket_jaw"};
-                e.pocket = read_pocket(f.at("pocket_jaw"));
-            }
-            break;
+            // One of the two: a cushion, or the jaw of a pocket.
+            return {"speed", f.find("pocket_jaw") && !f.find("cushion") ? "pocket_jaw" : "cushion"};
         case EventType::pocket:
-            own = {"pocket"};
-            e.pocket = read_pocket(f.at("pocket"));
-            break;
+            return {"pocket"};
         case EventType::strike:
         case EventType::miscue:
         case EventType::off_table:
             break;
     }
-    for (std::string_view key : {"speed", "cushion", "pocket_jaw", "pocket", "from", "to"})
-        if (f.find(key) && std::find(own.begin(), own.end(), key) == own.end())
-            f.at(key).fail(fmt::format("a {} event has no `{}`", physics::to_string(e.type), key));
+    return {};
+}
+
+// `balls`: the event's ball ids, each the cue ball or (when `before` is given) on the table.
+void read_event_balls(const Field& balls, physics::Event& e, rules::Game game,
+                      const rules::GameState* before) {
+    using physics::EventType;
+    const std::size_t count = e.type == EventType::ball_ball ? 2 : 1;
+    if (balls.array_size() != count)
+        balls.fail(fmt::format("a {} event has {} ball{}", physics::to_string(e.type), count,
+                               count == 1 ? "" : "s"));
+    e.ball_count = static_cast<std::uint8_t>(count);
+    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+    for (std::size_t k = 0; k < count; ++k) {
+        const int id = read_ball(balls.at(k), game, true);
+        if (before && id != 0 && !before->has(id))
+            balls.at(k).fail(fmt::format("ball {} is not on the table", id));
+        e.balls[k] = {id, {nan, nan}, {}, {}};
+    }
+    if (count == 2 && e.balls[0].id == e.balls[1].id) balls.fail("two different balls collide");
+    if ((e.type == EventType::strike || e.type == EventType::miscue) && e.balls[0].id != 0)
+        balls.at(std::size_t{0}).fail("only the cue ball (0) is struck");
+}
+
+// `pos`, `vel` and `spin`: one entry per ball of the event.
+void read_event_motion(const Field& f, physics::Event& e, Fields fields) {
+    const std::size_t count = e.ball_count;
+    auto per_ball = [&](std::string_view key, auto read) {
+        std::optional<Field> list = fields == Fields::all ? f.at(key) : f.find(key);
+        if (!list) return;
+        if (list->array_size() != count)
+            list->fail(
+                fmt::format("expected {} entr{}, one per ball", count, count == 1 ? "y" : "ies"));
+        for (std::size_t k = 0; k < count; ++k) read(k, list->at(k));
+    };
+    per_ball("pos", [&](std::size_t k, const Field& v) { e.balls[k].pos = read_vec2(v); });
+    per_ball("vel", [&](std::size_t k, const Field& v) { e.balls[k].vel = read_vec2(v); });
+    per_ball("spin", [&](std::size_t k, const Field& v) { e.balls[k].spin = read_vec3(v); });
+}
+
+// The fields of the event's type (`own`), and no other.
+void read_event_own(const Field& f, physics::Event& e, const std::vector<std::string_view>& own,
+                    Fields fields) {
+    using physics::EventType;
+    auto given = [&](std::string_view key) {
+        const bool mine = std::find(own.begin(), own.end(), key) != own.end();
+        // A pocket event's pocket is required by the CLI too: the rules need it.
+        const bool needed = fields == Fields::all || key == "pocket";
+        return mine ? (needed ? std::optional<Field>(f.at(key)) : f.find(key)) : std::nullopt;
+    };
+    if (auto v = given("from")) e.from = read_motion(*v);
+    if (auto v = given("to")) e.to = read_motion(*v);
+    if (auto v = given("speed")) e.speed = v->number_in(0.0, 1e6);
+    if (auto v = given("cushion")) e.rail = read_rail(*v);
+    if (auto v = given("pocket_jaw")) e.pocket = read_pocket(*v);
+    if (auto v = given("pocket")) e.pocket = read_pocket(*v);
+    for (std::string_view key : {"speed", "cushion", "pocket_jaw", "pocket", "from", "to"}) {
+        if (!f.find(key) || std::find(own.begin(), own.end(), key) != own.end()) continue;
+        if (e.type == EventType::cushion && (key == "cushion" || key == "pocket_jaw"))
+            f.at(key).fail("a cushion event names either a `cushion` or a `pocket_jaw`, not both");
+        f.at(key).fail(fmt::format("a {} event has no `{}`", physics::to_string(e.type), key));
+    }
+}
+
+}  // namespace
+
+physics::Event read_event(const Field& f, rules::Game game, Fields fields,
+                          const rules::GameState* before) {
+    f.require_fields({"type", "balls"}, {"time", "pos", "vel", "spin", "speed", "cushion",
+                                         "pocket_jaw", "pocket", "from", "to"});
+    physics::Event e;
+    e.type = read_event_type(f.at("type"));
+    read_event_balls(f.at("balls"), e, game, before);
+    if (std::optional<Field> time = fields == Fields::all ? f.at("time") : f.find("time"))
+        e.time = time->number_in(0.0, 1e9);
+    read_event_motion(f, e, fields);
+    read_event_own(f, e, own_fields(e.type, f), fields);
     return e;
 }
 

@@ -36,6 +36,11 @@ nlohmann::ordered_json to_json(const physics::Stroke& s);
 nlohmann::ordered_json to_json(const physics::Event& e);
 
 // ---- Reading
+/// How much of a document must be given: a saved game has `all` the fields `to_json` writes;
+/// the CLI's input (docs/cli.md, `judge` and `decide`) may leave out the optional ones
+/// (`required`), which then take their defaults.
+enum class Fields { all, required };
+
 /// What a state is checked against.
 struct TableContext {
     rules::Game game;
@@ -45,21 +50,35 @@ struct TableContext {
 
 physics::Vec2 read_vec2(const Field& f);
 physics::Vec3 read_vec3(const Field& f);
-/// Every switch must be given.
-rules::Options read_options(const Field& f);
-/// A complete state: every field given; the checks of the `judge` contract (object balls of the
-/// game, the 8 (9) on the table, groups and calls only where they can be, a push-out only in
+/// A table: an object of the table's dimensions (docs/cli.md, `table`), checked for balls of
+/// `ball_radius`. With `Fields::required` a preset name ("9ft") or an object of overrides of
+/// a preset (`"preset"`, default "9ft"); with `Fields::all` every dimension is given.
+physics::TableSpec read_table(const Field& f, double ball_radius, Fields fields);
+/// The physical parameters, each within its accepted range (docs/cli.md, `params`); with
+/// `Fields::required` every one is optional and keeps its default.
+physics::Params read_params(const Field& f, Fields fields);
+/// The house-rule switches; with `Fields::required` every switch is optional.
+rules::Options read_options(const Field& f, Fields fields);
+/// A state: with `Fields::all` every field given, with `Fields::required` only `shooter`,
+/// `breaker`, `shot`, `on_table` and `cue_ball`; the checks of the `judge` contract (object balls
+/// of the game, the 8 (9) on the table, groups and calls only where they can be, a push-out only in
 /// 9-ball with the cue ball on the table); and a position for every ball on the table, for the
 /// cue ball when it is on the table (a cue ball in hand may have one: placed), none for another
 /// ball, all on the playing surface and not overlapping, a cue ball in hand in the kitchen
-/// behind the head string. `finished`: the game is over, so the 8 (9) may be down.
-rules::GameState read_state(const Field& f, const TableContext& t, bool finished = false);
+/// behind the head string (with `Fields::required` a ball on the table may have no position).
+/// `finished`: the game is over, so the 8 (9) may be down.
+rules::GameState read_state(const Field& f, const TableContext& t, Fields fields,
+                            bool finished = false);
 /// A verdict (the `judge` output), its fields consistent with each other.
 rules::Verdict read_verdict(const Field& f, const TableContext& t);
 /// A stroke within the bounds the session accepts.
 physics::Stroke read_stroke(const Field& f);
-/// An event with every field `to_json` writes.
-physics::Event read_event(const Field& f, rules::Game game);
+/// An event. With `Fields::all` every field `to_json` writes; with `Fields::required` only
+/// `type`, `balls` and a pocket event's `pocket` (an event without `pos` has NaN positions).
+/// A field of another type of event is an error. `before`, when given: the state before the
+/// shot, whose balls on the table (and the cue ball) are the only ones an event may name.
+physics::Event read_event(const Field& f, rules::Game game, Fields fields,
+                          const rules::GameState* before = nullptr);
 /// A pocket name ("SW" ... "NE").
 int read_pocket(const Field& f);
 

@@ -37,10 +37,11 @@ TEST(ParseDocument, MalformedAndOverflowingDocumentsAreBadInput) {
     EXPECT_EQ(error_of("{\"a\":\n\n 1,}").find('\n'), std::string::npos);
 }
 
-TEST(ParseDocument, DeepNestingDoesNotCrash) {
+TEST(ParseDocument, DeepNestingIsBadInputNotACrash) {
     std::string deep(100000, '[');
     deep += std::string(100000, ']');
-    EXPECT_NO_THROW(cli::parse_document(deep));
+    EXPECT_EQ(error_of(deep).rfind("[0][0]", 0), 0u) << error_of(deep);
+    EXPECT_NE(error_of(deep).find("nested more than 64 levels"), std::string::npos);
 }
 
 TEST(JsonIn, PathsOfNestedValues) {

@@ -1,6 +1,7 @@
 // Save and resume: the round trip, every kind of corrupt or foreign input with the path of the
 // offending field, loading never touching the file, saving replacing it atomically.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -246,8 +247,8 @@ TEST(SaveLoad, CorruptDocumentsNameTheField) {
 
 TEST(SaveLoad, MalformedText) {
     const std::string valid = in_progress().to_json();
-    EXPECT_EQ(load_error("").rfind("session: not a valid JSON document", 0), 0u);
-    EXPECT_EQ(load_error(valid.substr(0, valid.size() / 2)).rfind("session: not a valid JSON", 0),
+    EXPECT_EQ(load_error("").rfind("session: not valid JSON", 0), 0u);
+    EXPECT_EQ(load_error(valid.substr(0, valid.size() / 2)).rfind("session: not valid JSON", 0),
               0u);
     EXPECT_EQ(load_error("{\"format\": \"coolaaber-session\"} trailing").rfind("session:", 0), 0u);
     // A key given twice: nlohmann would keep the last one silently.
@@ -314,6 +315,24 @@ TEST(SaveLoad, SaveReplacesAtomically) {
     EXPECT_THROW(first.save_file(dir / "no-such-dir" / "game.json"), std::runtime_error);
     EXPECT_EQ(listing(dir), (std::vector<fs::path>{"game.json", "occupied"}));
     EXPECT_EQ(slurp(file), second.to_json());
+}
+
+TEST(SaveLoad, AFifoIsNeitherReadNorReplaced) {
+    const fs::path dir = fresh_dir();
+    const fs::path fifo = dir / "game.json";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    // Without a writer: opening it to read must not wait for one.
+    try {
+        (void)Session::load_file(fifo);
+        FAIL();
+    } catch (const LoadError& e) {
+        EXPECT_EQ(e.path(), fifo.string());
+        EXPECT_EQ(e.detail().rfind("is a FIFO (named pipe), not a regular file", 0), 0u)
+            << e.detail();
+    }
+    EXPECT_THROW(in_progress().save_file(fifo), std::runtime_error);
+    EXPECT_TRUE(fs::is_fifo(fifo));
+    EXPECT_EQ(listing(dir), std::vector<fs::path>{"game.json"});
 }
 
 }  // namespace

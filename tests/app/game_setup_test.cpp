@@ -1,0 +1,95 @@
+// Start-up with odd files (app/game_setup.hpp): a settings file or a saved game that is a
+// directory or a FIFO is kept aside with a message and the game starts with the defaults; a
+// --load file that is not a regular file is refused at once. Nothing blocks, nothing is lost.
+#include "app/game_setup.hpp"
+
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+
+#include "game/json_field.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// XDG folders of its own for one test, restored afterwards.
+class Folders {
+  public:
+    explicit Folders(const std::string& name)
+        : root_(fs::temp_directory_path() /
+                ("coolaaber-setup-" + name + "-" + std::to_string(::getpid()))) {
+        fs::remove_all(root_);
+        fs::create_directories(config());
+        fs::create_directories(data());
+        ::setenv("XDG_CONFIG_HOME", (root_ / "config").c_str(), 1);
+        ::setenv("XDG_DATA_HOME", (root_ / "data").c_str(), 1);
+    }
+    ~Folders() {
+        ::unsetenv("XDG_CONFIG_HOME");
+        ::unsetenv("XDG_DATA_HOME");
+        fs::remove_all(root_);
+    }
+    fs::path config() const { return root_ / "config" / "coolaaber"; }
+    fs::path data() const { return root_ / "data" / "coolaaber"; }
+    fs::path root() const { return root_; }
+
+  private:
+    fs::path root_;
+};
+
+app::AppOptions options() {
+    app::AppOptions o;
+    o.seed = 5;
+    return o;
+}
+
+TEST(GameSetup, SettingsThatAreADirectoryAreKeptAsideLikeASavedGame) {
+    const Folders f("settings-dir");
+    fs::create_directories(f.config() / "settings.json" / "inside");
+    fs::create_directories(f.data() / "saved-game.json");
+    const app::GameSetup g = app::set_up_game(options());
+    EXPECT_EQ(g.settings, app::Settings{});
+    ASSERT_TRUE(g.session.has_value());
+    EXPECT_NE(g.notice.find("settings.json: is a directory, not a regular file"), std::string::npos)
+        << g.notice;
+    EXPECT_NE(g.notice.find("saved game could not be resumed"), std::string::npos) << g.notice;
+    // Both kept, nothing lost.
+    EXPECT_TRUE(fs::is_directory(f.config() / "settings.json.bad" / "inside"));
+    EXPECT_TRUE(fs::is_directory(f.data() / "saved-game.json.bad"));
+}
+
+TEST(GameSetup, FifosAsSettingsOrSavedGameDoNotBlock) {
+    const Folders f("fifo");
+    ASSERT_EQ(::mkfifo((f.config() / "settings.json").c_str(), 0600), 0);
+    ASSERT_EQ(::mkfifo((f.data() / "saved-game.json").c_str(), 0600), 0);
+    const app::GameSetup g = app::set_up_game(options());
+    EXPECT_EQ(g.settings, app::Settings{});
+    EXPECT_NE(g.notice.find("settings.json: is a FIFO (named pipe), not a regular file"),
+              std::string::npos)
+        << g.notice;
+    EXPECT_NE(g.notice.find("saved-game.json: is a FIFO"), std::string::npos) << g.notice;
+    EXPECT_TRUE(fs::is_fifo(f.config() / "settings.json.bad"));
+    EXPECT_TRUE(fs::is_fifo(f.data() / "saved-game.json.bad"));
+}
+
+TEST(GameSetup, ALoadFileThatIsAFifoIsRefused) {
+    const Folders f("load-fifo");
+    const fs::path fifo = f.root() / "game.json";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    app::AppOptions o = options();
+    o.load = fifo;
+    try {
+        (void)app::set_up_game(o);
+        FAIL() << "a FIFO was loaded";
+    } catch (const game::LoadError& e) {
+        EXPECT_EQ(e.path(), fifo.string());
+        EXPECT_EQ(e.detail().rfind("is a FIFO (named pipe), not a regular file", 0), 0u);
+    }
+    EXPECT_TRUE(fs::is_fifo(fifo));  // untouched
+}
+
+}  // namespace
