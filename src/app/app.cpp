@@ -134,7 +134,7 @@ struct Table {
     /// Writes the settings when they changed (the Sound checkbox, the power, the view...), so
     /// they persist at once and not only on Exit.
     void persist_settings() {
-        if (setup.settings == saved) return;
+        if (setup.settings == saved || setup.settings_path.empty()) return;
         try {
             save_settings(setup.settings_path, setup.settings);
             saved = setup.settings;
@@ -148,6 +148,7 @@ struct Table {
         const std::string err = save_on_exit(controller.session(), setup.autosave_path);
         if (!err.empty())
             std::fprintf(stderr, "coolaaber: the game was not saved: %s\n", err.c_str());
+        if (setup.settings_path.empty()) return;
         try {
             save_settings(setup.settings_path, setup.settings);
         } catch (const std::exception& e) {

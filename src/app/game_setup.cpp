@@ -28,6 +28,7 @@ GameSetup set_up_game(const AppOptions& o) {
     LoadedSettings loaded = load_settings(g.settings_path);
     g.settings = loaded.settings;
     if (loaded.message) g.notice = *loaded.message;
+    if (loaded.left_in_place) g.settings_path.clear();
     Settings& s = g.settings;
     if (o.width) s.window_width = *o.width;
     if (o.height) s.window_height = *o.height;
@@ -55,9 +56,13 @@ GameSetup set_up_game(const AppOptions& o) {
             return g;
         } catch (const game::LoadError& e) {
             const std::filesystem::path aside = keep_aside(g.autosave_path);
-            g.notice +=
-                fmt::format("{}The saved game could not be resumed ({}); it was kept as {}.",
-                            g.notice.empty() ? "" : "\n", e.what(), aside.string());
+            const std::string kept =
+                aside.empty() ? "it could not be renamed, so it is left as it is and this game "
+                                "will not be saved over it"
+                              : "it was kept as " + aside.string();
+            g.notice += fmt::format("{}The saved game could not be resumed ({}); {}.",
+                                    g.notice.empty() ? "" : "\n", e.what(), kept);
+            if (aside.empty()) g.autosave_path.clear();
         }
     }
     g.session.emplace(new_game_config(s, seed));
@@ -65,6 +70,7 @@ GameSetup set_up_game(const AppOptions& o) {
 }
 
 std::string save_on_exit(const game::Session& session, const std::filesystem::path& path) {
+    if (path.empty()) return {};
     std::error_code ec;
     try {
         if (session.phase() == game::Phase::game_over) {

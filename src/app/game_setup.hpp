@@ -15,6 +15,8 @@ namespace app {
 
 struct GameSetup {
     Settings settings;
+    /// Where the settings and the game are saved; empty where a bad file could not be set
+    /// aside (it is never written over).
     std::filesystem::path settings_path;
     std::filesystem::path autosave_path;
     std::optional<game::Session> session;
@@ -32,7 +34,7 @@ GameSetup set_up_game(const AppOptions& options);
 std::uint64_t fresh_seed();
 
 /// Saves the game on exit (an unfinished one) or removes the old save (a finished one);
-/// returns an error message or empty.
+/// returns an error message or empty. An empty `path` saves nothing.
 std::string save_on_exit(const game::Session& session, const std::filesystem::path& path);
 
 }  // namespace app

@@ -129,10 +129,15 @@ LoadedSettings load_settings(const std::filesystem::path& path) {
         return {settings_from_json(game::read_regular_file(path)), std::nullopt};
     } catch (const game::LoadError& e) {
         const std::filesystem::path aside = keep_aside(path);
-        return {Settings{},
-                fmt::format("{}{}; it was kept as {} and the default settings are used",
-                            e.path() == path.string() ? "" : path.string() + ": ", e.what(),
-                            aside.empty() ? std::string("(could not rename it)") : aside.string())};
+        const std::string where = e.path() == path.string() ? "" : path.string() + ": ";
+        if (aside.empty())
+            return {Settings{},
+                    fmt::format("{}{}; it could not be renamed, so it is left as it is and the "
+                                "default settings are used without being saved",
+                                where, e.what()),
+                    true};
+        return {Settings{}, fmt::format("{}{}; it was kept as {} and the default settings are used",
+                                        where, e.what(), aside.string())};
     }
 }
 

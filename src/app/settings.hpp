@@ -50,6 +50,8 @@ Settings settings_from_json(const std::string& text);
 struct LoadedSettings {
     Settings settings;
     std::optional<std::string> message;  ///< set when the file was bad and was kept aside
+    /// A bad file that could not be renamed: it stays where it was and must not be written over.
+    bool left_in_place = false;
 };
 
 /// Reads `path`; a missing file gives the defaults silently; a bad one is renamed to

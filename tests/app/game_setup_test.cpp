@@ -9,6 +9,9 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
 
 #include "game/json_field.hpp"
 
@@ -90,6 +93,35 @@ TEST(GameSetup, ALoadFileThatIsAFifoIsRefused) {
         EXPECT_EQ(e.detail().rfind("is a FIFO (named pipe), not a regular file", 0), 0u);
     }
     EXPECT_TRUE(fs::is_fifo(fifo));  // untouched
+}
+
+// Every name keep_aside would use (.bad, .bad-2 … .bad-999) is taken.
+void take_every_aside_name(const fs::path& path) {
+    std::ofstream(fs::path(path).concat(".bad")) << "";
+    for (int k = 2; k < 1000; ++k)
+        std::ofstream(fs::path(path).concat(".bad-" + std::to_string(k))) << "";
+}
+
+std::string contents(const fs::path& path) {
+    std::ifstream in(path);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST(GameSetup, BadFilesThatCannotBeSetAsideAreNeverWrittenOver) {
+    const Folders f("no-aside");
+    const fs::path settings = f.config() / "settings.json", save = f.data() / "saved-game.json";
+    std::ofstream(settings) << "{ not settings";
+    std::ofstream(save) << "{ not a saved game";
+    take_every_aside_name(settings);
+    take_every_aside_name(save);
+    app::GameSetup g = app::set_up_game(options());
+    ASSERT_TRUE(g.session.has_value());
+    EXPECT_NE(g.notice.find("left as it is"), std::string::npos) << g.notice;
+    EXPECT_TRUE(g.settings_path.empty());
+    EXPECT_TRUE(g.autosave_path.empty());
+    EXPECT_EQ(app::save_on_exit(*g.session, g.autosave_path), "");
+    EXPECT_EQ(contents(settings), "{ not settings");
+    EXPECT_EQ(contents(save), "{ not a saved game");
 }
 
 }  // namespace
