@@ -53,14 +53,6 @@ std::optional<rules::Choice> read_choice(const JsonIn& in) {
     return c;
 }
 
-std::uint64_t read_seed(const JsonIn& in) {
-    const nlohmann::json& v = in.raw();
-    if (v.is_number_unsigned()) return v.get<std::uint64_t>();
-    if (v.is_number_integer() && v.get<std::int64_t>() >= 0)
-        return static_cast<std::uint64_t>(v.get<std::int64_t>());
-    in.fail("expected a whole number from 0 to 18446744073709551615");
-}
-
 // The AI plans from every ball's position: the judge's state may be partial, this one may not.
 void require_positions(const JsonIn& state, const rules::GameState& s) {
     const std::string path = state.path() + ".positions";
@@ -111,7 +103,7 @@ nlohmann::ordered_json decide_command(const nlohmann::json& input) {
     if (auto l = in.find("level")) settings.level = static_cast<int>(l->integer_in(1, 5));
     if (auto n = in.find("noise")) settings.noise = n->number_in(0.0, max_noise);
     std::uint64_t seed = 1;
-    if (auto s = in.find("seed")) seed = read_seed(*s);
+    if (auto s = in.find("seed")) seed = s->unsigned_integer();
 
     const auto start = clock::now();
     const ai::Plan plan = ai::plan(pos, settings, seed);

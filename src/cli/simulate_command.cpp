@@ -19,7 +19,7 @@ namespace {
 inline constexpr std::size_t max_sample_times = 10000;
 // Beyond any shot's end; keeps positions finite even for a ball that never stops (no friction).
 inline constexpr double max_sample_time = 1e6;  // (unit: s)
-inline constexpr std::int64_t max_event_cap = 10'000'000;
+inline constexpr std::int64_t max_event_cap = 1'000'000;
 
 struct SimulateInput {
     physics::Table table;

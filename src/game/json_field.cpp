@@ -116,7 +116,8 @@ std::int64_t Field::integer() const {
         // A whole number written with a fraction part (3.0) is the integer it names.
         const double d = value_->get<double>();
         if (d != std::floor(d)) fail("expected an integer, got a number with a fraction");
-        if (!(std::fabs(d) < 9.0e15)) fail("integer is too large");
+        if (!(std::fabs(d) < 9.0e15))
+            fail("integer is too large: write it without a fraction part (3, not 3.0)");
         return static_cast<std::int64_t>(d);
     }
     if (!value_->is_number_integer())
@@ -134,9 +135,16 @@ std::int64_t Field::integer_in(std::int64_t lo, std::int64_t hi) const {
 
 std::uint64_t Field::unsigned_integer() const {
     if (value_->is_number_unsigned()) return value_->get<std::uint64_t>();
-    if (value_->is_number_integer()) fail("must not be negative");
-    fail(fmt::format("expected an integer from 0 to 18446744073709551615, got {}",
-                     type_name(*value_)));
+    if (value_->is_number_float()) {
+        // A whole number written with a fraction part (3.0) is the integer it names.
+        const double d = value_->get<double>();
+        if (d >= 0.0 && d == std::floor(d) && d < 9.0e15) return static_cast<std::uint64_t>(d);
+    }
+    const bool negative = value_->is_number() && value_->get<double>() < 0.0;
+    fail(fmt::format("expected a whole number from 0 to 18446744073709551615, got {}",
+                     !value_->is_number() ? type_name(*value_)
+                     : negative           ? "a negative number, " + value_->dump()
+                                          : value_->dump()));
 }
 
 bool Field::boolean() const {

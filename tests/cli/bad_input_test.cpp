@@ -124,6 +124,7 @@ const std::vector<BadCase> kCases = {
      "out of range"},
     {"max_events_zero", doc(R"("max_events": 0)"), "max_events", "out of range"},
     {"max_events_huge", doc(R"("max_events": 20000000)"), "max_events", "out of range"},
+    {"max_events_over_the_cap", doc(R"("max_events": 1000001)"), "max_events", "out of range"},
     {"sample_time_negative", doc(R"("sample_times": [0.5, -1])"), "sample_times[1]",
      "out of range"},
     {"sample_time_huge", doc(R"("sample_times": [1e308])"), "sample_times[0]", "out of range"},

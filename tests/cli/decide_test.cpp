@@ -50,6 +50,13 @@ TEST(Decide, SameInputSameDecision) {
     EXPECT_EQ(without_seconds(decide(kStraight)), without_seconds(decide(kStraight)));
 }
 
+// docs/cli.md, "General rules": integers may be written as 3 or 3.0.
+TEST(Decide, ASeedWrittenWithAFractionPartIsTheSameSeed) {
+    std::string with_fraction = kStraight;
+    with_fraction.replace(with_fraction.find("\"seed\": 3"), 9, "\"seed\": 3.0");
+    EXPECT_EQ(without_seconds(decide(with_fraction)), without_seconds(decide(kStraight)));
+}
+
 TEST(Decide, EightBallCallsItsShot) {
     const json j = decide(R"({"game": "8ball", "level": 1, "noise": 1, "seed": 1,
       "state": {"shooter": "A", "breaker": "A", "shot": "normal",
