@@ -1,5 +1,5 @@
 // libFuzzer target for the game's settings file: any bytes in, settings or game::LoadError out
-// (docs/app.md).
+// (docs/app.md, "Files").
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -15,8 +15,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     } catch (const game::LoadError&) {
         return 0;
     }
-    // What loads must save and load again: an exception escaping here aborts, and the fuzzer
-    // reports the input.
-    (void)app::settings_from_json(app::settings_to_json(*settings));
+    // What loads must save and load again to the same settings: an exception escaping here or
+    // a trap aborts, and the fuzzer reports the input.
+    if (app::settings_from_json(app::settings_to_json(*settings)) != *settings) __builtin_trap();
     return 0;
 }
