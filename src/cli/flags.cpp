@@ -4,6 +4,8 @@
 
 #include <charconv>
 #include <cmath>
+#include <filesystem>
+#include <system_error>
 
 #include "cli/json_in.hpp"
 
@@ -42,6 +44,13 @@ std::string read_file_flag(std::string_view flag, const std::string& text) {
                        fmt::format("\"{}\" looks like a flag, not a file name: give the file "
                                    "(./{} for a file of that name)",
                                    text, text));
+    // Opening a FIFO or a device to write could block, or write where no file is wanted.
+    std::error_code ec;
+    const std::filesystem::file_status status = std::filesystem::status(text, ec);
+    if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+        throw BadInput(
+            std::string(flag),
+            fmt::format("\"{}\" exists and is not a regular file: give a file to write", text));
     return text;
 }
 

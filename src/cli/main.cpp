@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <new>
@@ -94,6 +95,9 @@ Verbs add_verbs(CLI::App& app, CommandLine& line) {
 // The input document from FILE, or standard input when FILE is "-", within the size limit.
 std::string read_input(const std::string& file) {
     if (file == "-") return game::read_stream(std::cin, "-");
+    if (file.empty())
+        throw cli::BadInput("FILE",
+                            "an empty file name: give a JSON file, or - for standard input");
     return game::read_regular_file(file);
 }
 
@@ -158,5 +162,7 @@ int main(int argc, char** argv) {
         print_error(fmt::format("command line: {} (see coolaaber-cli --help)", e.what()));
         return exit_bad_input;
     }
+    // A closed output pipe is a failed write (exit 1 with a message), not a silent SIGPIPE.
+    std::signal(SIGPIPE, SIG_IGN);
     return run_and_print(verbs, line);
 }

@@ -3,6 +3,7 @@
 #include "cli/flags.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <filesystem>
 #include <string>
@@ -48,6 +49,22 @@ TEST(Flags, AFlagWhereAFileNameBelongsIsBadInput) {
     EXPECT_EQ(WEXITSTATUS(status), 2);
     EXPECT_FALSE(std::filesystem::exists(dir / "--bogus"));
     std::filesystem::remove_all(dir);
+}
+
+TEST(Flags, ALogThatIsAFifoOrADirectoryIsRefusedWithoutBlocking) {
+    const std::filesystem::path dir = cli_test::temp_path("log-fifo");
+    std::filesystem::create_directories(dir);
+    const std::filesystem::path fifo = dir / "log.jsonl";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    const std::string match = "match --game 8ball --players random,random --games 1 --log ";
+    expect_bad_flag(match + "'" + fifo.string() + "'", "--log");
+    expect_bad_flag(match + "'" + dir.string() + "'", "--log");
+    EXPECT_TRUE(std::filesystem::is_fifo(fifo));
+    std::filesystem::remove_all(dir);
+}
+
+TEST(Flags, AnEmptyInputFileNameIsBadInput) {
+    expect_bad_flag("simulate ''", "FILE");
 }
 
 TEST(Flags, StrictReaders) {
