@@ -70,8 +70,8 @@ std::vector<std::size_t> all_indices(std::size_t n) {
 }
 
 // Noiseless play of candidates [from, end).
-void score_nominal(Search& s, std::vector<Candidate>& cands, std::vector<Score>& nominal,
-                   std::size_t from) {
+void score_nominal_from(Search& s, std::vector<Candidate>& cands, std::vector<Score>& nominal,
+                        std::size_t from) {
     score_nominal(s, cands, nominal, indices_from(from, cands.size()));
 }
 
@@ -123,7 +123,7 @@ void polish_pots(Search& s, std::vector<Candidate>& cands, std::vector<Score>& n
         std::vector<Candidate> more = pot_variants(s.pos, cands[i], s.effort, s.simulations);
         cands.insert(cands.end(), more.begin(), more.end());
     }
-    score_nominal(s, cands, nominal, from);
+    score_nominal_from(s, cands, nominal, from);
     const std::vector<std::size_t> added = indices_from(from, cands.size());
     centre_pots(s, cands, nominal, added);
     noisy.resize(cands.size());
@@ -277,7 +277,7 @@ void add_kicks(Search& s, std::vector<Candidate>& cands, std::vector<Score>& nom
         cands.insert(cands.end(), kicks.begin(), kicks.end());
         if (in_hand) break;
     }
-    score_nominal(s, cands, nominal, from);
+    score_nominal_from(s, cands, nominal, from);
     if (s.effort.centred_kicks <= 0) return;
     const std::vector<Candidate> kicks(cands.begin() + static_cast<std::ptrdiff_t>(from),
                                        cands.end());
@@ -290,7 +290,7 @@ void add_kicks(Search& s, std::vector<Candidate>& cands, std::vector<Score>& nom
                       raise, s.simulations, s.workers);
     const std::size_t at = cands.size();
     cands.insert(cands.end(), centred.begin(), centred.end());
-    score_nominal(s, cands, nominal, at);
+    score_nominal_from(s, cands, nominal, at);
 }
 
 // A safety at the first spot, where no candidate came up (not with a legal ball on the table).
@@ -309,7 +309,7 @@ Candidate fallback_safety(const Position& pos, const std::vector<physics::Vec2>&
 std::pair<Candidate, Score> best_push_out(Search& s) {
     std::vector<Candidate> pushes = push_out_candidates(s.pos, s.pos.state.positions.at(0));
     std::vector<Score> push_nominal;
-    score_nominal(s, pushes, push_nominal, 0);
+    score_nominal_from(s, pushes, push_nominal, 0);
     std::vector<Score> push_noisy;
     const std::size_t p =
         choose_under_noise(s, pushes, push_nominal, push_noisy,
@@ -327,7 +327,7 @@ Plan plan_stroke(Search& s, double sigma_deg) {
                 : std::vector<physics::Vec2>{pos.state.positions.at(0)};
     std::vector<Candidate> cands = direct_candidates(s, spots, in_hand, sigma_deg);
     std::vector<Score> nominal;
-    score_nominal(s, cands, nominal, 0);
+    score_nominal_from(s, cands, nominal, 0);
     if (needs_kicks(cands, nominal)) add_kicks(s, cands, nominal, spots, in_hand);
     if (cands.empty()) {
         cands.push_back(fallback_safety(pos, spots, in_hand));

@@ -44,7 +44,8 @@ struct Effort {
     // The rounds under noise.
     int shortlist = 0;  ///< candidates evaluated under noise, the best nominal ones
     int samples = 0;    ///< noisy simulations per shortlisted candidate
-    int finalists = 0;  ///< the best few get `finalist_rounds` × `samples` more
+    /// The best few get `finalist_rounds` × `samples` more draws; 1 or less: no finalist round.
+    int finalists = 0;
     /// How many times `samples` more draws the finalists get: more rounds let the choice among
     /// near-sure pots rest on more draws (deep_search_test.cpp's FinalistDraws).
     int finalist_rounds = 0;
