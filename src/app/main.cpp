@@ -5,74 +5,107 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <stdexcept>
+#include <string>
 
 #include "app/app.hpp"
 #include "app/settings.hpp"
 
-int main(int argc, char** argv) {
-    CLI::App cli{"Coolaaber: a game of pool (8-ball and 9-ball)", "coolaaber"};
-    app::AppOptions o;
+namespace {
+
+// The options as given on the command line, before they are read into app::AppOptions.
+struct CommandLine {
+    app::AppOptions options;
     std::string size, game, view, players;
     std::string load, screenshot, status;
     std::uint64_t seed = 0;
+    CLI::Option* seed_given = nullptr;
     double noise = -1.0;
-    cli.add_option("--size", size, "window size WIDTHxHEIGHT, e.g. 1280x720");
+};
+
+// A bad option value: "error: <option>: <message>", exit status 2.
+struct BadOption : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+void add_options(CLI::App& cli, CommandLine& line) {
+    app::AppOptions& o = line.options;
+    cli.add_option("--size", line.size, "window size WIDTHxHEIGHT, e.g. 1280x720");
     cli.add_flag("--fullscreen", o.fullscreen, "start in fullscreen (F11 toggles)");
-    cli.add_option("--game", game, "start a new game: 8ball or 9ball")
+    cli.add_option("--game", line.game, "start a new game: 8ball or 9ball")
         ->check(CLI::IsMember({"8ball", "9ball"}));
-    cli.add_option("--load", load, "resume a saved game from FILE");
-    cli.add_option("--view", view, "overhead or cueball")
+    cli.add_option("--load", line.load, "resume a saved game from FILE");
+    cli.add_option("--view", line.view, "overhead or cueball")
         ->check(CLI::IsMember({"overhead", "cueball"}));
-    cli.add_option("--screenshot", screenshot,
+    cli.add_option("--screenshot", line.screenshot,
                    "render the first frame offscreen into a PNG and exit");
-    cli.add_option("--players", players,
+    cli.add_option("--players", line.players,
                    "who plays: two of human, random, ai:1 ... ai:5 (e.g. human,ai:3)");
-    auto* seed_opt = cli.add_option("--seed", seed, "seed of the racks and the computer players");
-    cli.add_option("--noise", noise, "execution noise of computer players (0 none, 1 standard)")
+    line.seed_given =
+        cli.add_option("--seed", line.seed, "seed of the racks and the computer players");
+    cli.add_option("--noise", line.noise,
+                   "execution noise of computer players (0 none, 1 standard)")
         ->check(CLI::Range(0.0, 10.0));
     cli.add_option("--playback-speed", o.playback_speed, "shot playback speed; 0 jumps to the end")
         ->check(CLI::Range(0.0, 100.0));
-    cli.add_option("--status-file", status,
+    cli.add_option("--status-file", line.status,
                    "test hook: write what the player sees as JSON to FILE");
+}
+
+void read_size(const std::string& size, app::AppOptions& o) {
+    int w = 0, h = 0;
+    char tail = 0;
+    if (std::sscanf(size.c_str(), "%dx%d%c", &w, &h, &tail) != 2 || w < 320 || h < 240 ||
+        w > 16384 || h > 16384)
+        throw BadOption("--size: expected WIDTHxHEIGHT of at least 320x240, e.g. 1280x720");
+    o.width = w;
+    o.height = h;
+}
+
+std::array<std::string, 2> read_players(const std::string& players) {
+    const auto comma = players.find(',');
+    std::array<std::string, 2> p{players.substr(0, comma),
+                                 comma == std::string::npos ? "" : players.substr(comma + 1)};
+    for (const std::string& k : p)
+        if (!app::valid_player_kind(k))
+            throw BadOption("--players: \"" + k +
+                            "\" is not a player (expected two of human, random, ai:1 ... ai:5, "
+                            "e.g. human,ai:3)");
+    return p;
+}
+
+// The options given, read into the game's options; a bad value throws BadOption.
+app::AppOptions read_options(const CommandLine& line) {
+    app::AppOptions o = line.options;
+    if (!line.size.empty()) read_size(line.size, o);
+    if (!line.game.empty())
+        o.game = line.game == "8ball" ? rules::Game::eight_ball : rules::Game::nine_ball;
+    if (!line.view.empty())
+        o.view = line.view == "overhead" ? app::ViewMode::overhead : app::ViewMode::cue_ball;
+    if (!line.load.empty()) o.load = line.load;
+    if (!line.screenshot.empty()) o.screenshot = line.screenshot;
+    if (!line.status.empty()) o.status_file = line.status;
+    if (*line.seed_given) o.seed = line.seed;
+    if (line.noise >= 0.0) o.noise = line.noise;
+    if (!line.players.empty()) o.players = read_players(line.players);
+    return o;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App cli{"Coolaaber: a game of pool (8-ball and 9-ball)", "coolaaber"};
+    CommandLine line;
+    add_options(cli, line);
+    app::AppOptions o;
     try {
         cli.parse(argc, argv);
+        o = read_options(line);
     } catch (const CLI::ParseError& e) {
         return cli.exit(e) == 0 ? 0 : 2;
-    }
-    if (!size.empty()) {
-        int w = 0, h = 0;
-        char tail = 0;
-        if (std::sscanf(size.c_str(), "%dx%d%c", &w, &h, &tail) != 2 || w < 320 || h < 240 ||
-            w > 16384 || h > 16384) {
-            std::fprintf(
-                stderr,
-                "error: --size: expected WIDTHxHEIGHT of at least 320x240, e.g. 1280x720\n");
-            return 2;
-        }
-        o.width = w;
-        o.height = h;
-    }
-    if (!game.empty()) o.game = game == "8ball" ? rules::Game::eight_ball : rules::Game::nine_ball;
-    if (!view.empty())
-        o.view = view == "overhead" ? app::ViewMode::overhead : app::ViewMode::cue_ball;
-    if (!load.empty()) o.load = load;
-    if (!screenshot.empty()) o.screenshot = screenshot;
-    if (!status.empty()) o.status_file = status;
-    if (*seed_opt) o.seed = seed;
-    if (noise >= 0.0) o.noise = noise;
-    if (!players.empty()) {
-        const auto comma = players.find(',');
-        std::array<std::string, 2> p{players.substr(0, comma),
-                                     comma == std::string::npos ? "" : players.substr(comma + 1)};
-        for (const std::string& k : p)
-            if (!app::valid_player_kind(k)) {
-                std::fprintf(stderr,
-                             "error: --players: \"%s\" is not a player (expected two of human, "
-                             "random, ai:1 ... ai:5, e.g. human,ai:3)\n",
-                             k.c_str());
-                return 2;
-            }
-        o.players = p;
+    } catch (const BadOption& e) {
+        std::fprintf(stderr, "error: %s\n", e.what());
+        return 2;
     }
     try {
         return o.screenshot ? app::run_screenshot(o) : app::run_window(o);
