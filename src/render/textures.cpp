@@ -90,91 +90,119 @@ TextureData make_wood_texture(int width, int height) {
     return t;
 }
 
-TextureData make_number_atlas(const std::string& font_path, int cell) {
-    std::ifstream in(font_path, std::ios::binary);
-    const std::vector<unsigned char> font_file((std::istreambuf_iterator<char>(in)),
-                                               std::istreambuf_iterator<char>());
-    if (font_file.empty())
-        throw std::runtime_error(
-            "cannot read the ball-number font " + font_path +
-            " (Debian: apt-get install fonts-dejavu-core; or set RenderSettings::number_font)");
-    stbtt_fontinfo font;
-    const int offset = stbtt_GetFontOffsetForIndex(font_file.data(), 0);
-    if (offset < 0 || !stbtt_InitFont(&font, font_file.data(), offset))
-        throw std::runtime_error("the ball-number font " + font_path + " is not a TrueType font");
+namespace {
 
+// A TrueType font file and stb's view of it (which points into the file's bytes).
+struct Font {
+    std::vector<unsigned char> file;
+    stbtt_fontinfo info{};
+
+    explicit Font(const std::string& path) {
+        std::ifstream in(path, std::ios::binary);
+        file.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+        if (file.empty())
+            throw std::runtime_error(
+                "cannot read the ball-number font " + path +
+                " (Debian: apt-get install fonts-dejavu-core; or set RenderSettings::number_font)");
+        const int offset = stbtt_GetFontOffsetForIndex(file.data(), 0);
+        if (offset < 0 || !stbtt_InitFont(&info, file.data(), offset))
+            throw std::runtime_error("the ball-number font " + path + " is not a TrueType font");
+    }
+    Font(const Font&) = delete;
+    Font& operator=(const Font&) = delete;
+
+    // At scale 1: the pen's advance past `c`, and the kerning between `a` and `b`.
+    float advance(int c) const {
+        int adv = 0, lsb = 0;
+        stbtt_GetCodepointHMetrics(&info, c, &adv, &lsb);
+        return static_cast<float>(adv);
+    }
+    float kerning(int a, int b) const {
+        return static_cast<float>(stbtt_GetCodepointKernAdvance(&info, a, b));
+    }
+};
+
+// One cell of the atlas: its top-left pixel (rows top down) and size.
+struct Cell {
+    int x, y, size;
+};
+
+// Draws `codepoint` at (pen, baseline) with scales (sx, sy), clipped to the cell's inside.
+void draw_glyph(TextureData& t, const Font& font, int codepoint, float sx, float sy, float pen,
+                float baseline, Cell c) {
+    int gx0 = 0, gy0 = 0, gx1 = 0, gy1 = 0;
+    const float shift = pen - std::floor(pen);
+    stbtt_GetCodepointBitmapBoxSubpixel(&font.info, codepoint, sx, sy, shift, 0.0f, &gx0, &gy0,
+                                        &gx1, &gy1);
+    const int gw = gx1 - gx0, gh = gy1 - gy0;
+    if (gw <= 0 || gh <= 0) return;
+    std::vector<unsigned char> glyph(static_cast<std::size_t>(gw) * static_cast<std::size_t>(gh),
+                                     0);
+    stbtt_MakeCodepointBitmapSubpixel(&font.info, glyph.data(), gw, gh, gw, sx, sy, shift, 0.0f,
+                                      codepoint);
+    const int ox = static_cast<int>(std::floor(pen)) + gx0;
+    const int oy = static_cast<int>(std::lround(baseline)) + gy0;
+    for (int y = 0; y < gh; ++y)
+        for (int x = 0; x < gw; ++x) {
+            const int px = ox + x, py = oy + y;
+            if (px < c.x + 1 || px >= c.x + c.size - 1 || py < c.y + 1 || py >= c.y + c.size - 1)
+                continue;
+            std::uint8_t& dst =
+                t.pixels[static_cast<std::size_t>(t.height - 1 - py) * t.width + px];
+            dst = std::max(dst, glyph[static_cast<std::size_t>(y) * gw + x]);
+        }
+}
+
+// The underline that tells 6 from 9 on a turned ball.
+void underline(TextureData& t, float baseline, Cell c) {
+    const int ux0 = c.x + c.size * 36 / 100, ux1 = c.x + c.size * 64 / 100;
+    const int uy0 = static_cast<int>(std::lround(baseline)) + c.size * 6 / 100;
+    const int uy1 = uy0 + std::max(2, c.size * 7 / 100);
+    for (int py = uy0; py < uy1 && py < c.y + c.size - 1; ++py)
+        for (int px = ux0; px < ux1; ++px)
+            t.pixels[static_cast<std::size_t>(t.height - 1 - py) * t.width + px] = 255;
+}
+
+// Ball number n, centred in its cell on the digits' shared baseline (`digit_h`: the height of
+// "0" at scale 1).
+void draw_number(TextureData& t, const Font& font, int n, Cell c, float digit_h) {
+    const std::string text = std::to_string(n);
+    const bool two = text.size() > 1;
+    // Single digits 0.62 of the cell tall; pairs a little smaller and condensed, as on real
+    // balls.
+    const float sy = (two ? 0.56f : 0.62f) * static_cast<float>(c.size) / digit_h;
+    float sx = sy;
+    float width = 0.0f;  // at scale 1, to centre the number (and fit pairs)
+    for (std::size_t k = 0; k < text.size(); ++k) {
+        width += font.advance(text[k]);
+        if (k + 1 < text.size()) width += font.kerning(text[k], text[k + 1]);
+    }
+    if (two) sx = std::min(sx * 0.86f, 0.80f * static_cast<float>(c.size) / width);
+    const float baseline =
+        static_cast<float>(c.y) + 0.5f * static_cast<float>(c.size) + 0.5f * digit_h * sy;
+    float pen = static_cast<float>(c.x) + 0.5f * static_cast<float>(c.size) - 0.5f * width * sx;
+    for (std::size_t k = 0; k < text.size(); ++k) {
+        draw_glyph(t, font, text[k], sx, sy, pen, baseline, c);
+        pen += font.advance(text[k]) * sx;
+        if (k + 1 < text.size()) pen += font.kerning(text[k], text[k + 1]) * sx;
+    }
+    if (n == 6 || n == 9) underline(t, baseline, c);
+}
+
+}  // namespace
+
+TextureData make_number_atlas(const std::string& font_path, int cell) {
+    const Font font(font_path);
     const int size = kNumberCells * cell;
     TextureData t{size, size, 1,
                   std::vector<std::uint8_t>(static_cast<std::size_t>(size) * size, 0)};
     // The digits' height: that of "0" in the font, so every number shares one baseline.
     int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-    stbtt_GetCodepointBox(&font, '0', &x0, &y0, &x1, &y1);
+    stbtt_GetCodepointBox(&font.info, '0', &x0, &y0, &x1, &y1);
     const float digit_h = static_cast<float>(y1 - y0);
-    for (int n = 1; n <= 15; ++n) {
-        const std::string text = std::to_string(n);
-        const bool two = text.size() > 1;
-        // Single digits 0.62 of the cell tall; pairs a little smaller and condensed, as on real
-        // balls.
-        const float sy = (two ? 0.56f : 0.62f) * static_cast<float>(cell) / digit_h;
-        float sx = sy;
-        // The pen advance of the whole number at scale 1, to centre it (and fit pairs).
-        float width = 0.0f;
-        for (std::size_t k = 0; k < text.size(); ++k) {
-            int adv = 0, lsb = 0;
-            stbtt_GetCodepointHMetrics(&font, text[k], &adv, &lsb);
-            width += static_cast<float>(adv);
-            if (k + 1 < text.size())
-                width +=
-                    static_cast<float>(stbtt_GetCodepointKernAdvance(&font, text[k], text[k + 1]));
-        }
-        if (two) sx = std::min(sx * 0.86f, 0.80f * static_cast<float>(cell) / width);
-        const int cx = (n % kNumberCells) * cell,
-                  cy = (n / kNumberCells) * cell;  // top-left, rows top down
-        const float baseline =
-            static_cast<float>(cy) + 0.5f * static_cast<float>(cell) + 0.5f * digit_h * sy;
-        float pen = static_cast<float>(cx) + 0.5f * static_cast<float>(cell) - 0.5f * width * sx;
-        std::vector<unsigned char> glyph;
-        for (std::size_t k = 0; k < text.size(); ++k) {
-            int gx0 = 0, gy0 = 0, gx1 = 0, gy1 = 0;
-            const float shift = pen - std::floor(pen);
-            stbtt_GetCodepointBitmapBoxSubpixel(&font, text[k], sx, sy, shift, 0.0f, &gx0, &gy0,
-                                                &gx1, &gy1);
-            const int gw = gx1 - gx0, gh = gy1 - gy0;
-            if (gw > 0 && gh > 0) {
-                glyph.assign(static_cast<std::size_t>(gw) * static_cast<std::size_t>(gh), 0);
-                stbtt_MakeCodepointBitmapSubpixel(&font, glyph.data(), gw, gh, gw, sx, sy, shift,
-                                                  0.0f, text[k]);
-                const int ox = static_cast<int>(std::floor(pen)) + gx0;
-                const int oy = static_cast<int>(std::lround(baseline)) + gy0;
-                for (int y = 0; y < gh; ++y)
-                    for (int x = 0; x < gw; ++x) {
-                        const int px = ox + x, py = oy + y;
-                        if (px < cx + 1 || px >= cx + cell - 1 || py < cy + 1 ||
-                            py >= cy + cell - 1)
-                            continue;
-                        std::uint8_t& dst =
-                            t.pixels[static_cast<std::size_t>(size - 1 - py) * size + px];
-                        dst = std::max(dst, glyph[static_cast<std::size_t>(y) * gw + x]);
-                    }
-            }
-            int adv = 0, lsb = 0;
-            stbtt_GetCodepointHMetrics(&font, text[k], &adv, &lsb);
-            pen += static_cast<float>(adv) * sx;
-            if (k + 1 < text.size())
-                pen +=
-                    static_cast<float>(stbtt_GetCodepointKernAdvance(&font, text[k], text[k + 1])) *
-                    sx;
-        }
-        if (n == 6 || n == 9) {
-            // The underline that tells 6 from 9 on a turned ball.
-            const int ux0 = cx + cell * 36 / 100, ux1 = cx + cell * 64 / 100;
-            const int uy0 = static_cast<int>(std::lround(baseline)) + cell * 6 / 100;
-            const int uy1 = uy0 + std::max(2, cell * 7 / 100);
-            for (int py = uy0; py < uy1 && py < cy + cell - 1; ++py)
-                for (int px = ux0; px < ux1; ++px)
-                    t.pixels[static_cast<std::size_t>(size - 1 - py) * size + px] = 255;
-        }
-    }
+    for (int n = 1; n <= 15; ++n)
+        draw_number(t, font, n, {(n % kNumberCells) * cell, (n / kNumberCells) * cell, cell},
+                    digit_h);
     return t;
 }
 
