@@ -6,9 +6,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "physics/collide.hpp"
 #include "physics/energy.hpp"
-#include "physics/motion.hpp"
+#include "physics/internal/collide.hpp"
+#include "physics/internal/motion.hpp"
 
 namespace physics::collide {
 

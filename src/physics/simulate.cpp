@@ -13,12 +13,12 @@
 #include <limits>
 #include <span>
 
-#include "physics/candidate_queue.hpp"
-#include "physics/collide.hpp"
 #include "physics/cue_strike.hpp"
-#include "physics/detect.hpp"
 #include "physics/energy.hpp"
-#include "physics/motion.hpp"
+#include "physics/internal/candidate_queue.hpp"
+#include "physics/internal/collide.hpp"
+#include "physics/internal/detect.hpp"
+#include "physics/internal/motion.hpp"
 
 namespace physics {
 

@@ -1,6 +1,6 @@
 // The event loop's candidate queue (src/physics/candidate_queue.hpp): the earliest candidate in
 // the total order, kept up to date as balls are re-predicted one at a time.
-#include "physics/candidate_queue.hpp"
+#include "physics/internal/candidate_queue.hpp"
 
 #include <gtest/gtest.h>
 

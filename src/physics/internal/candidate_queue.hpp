@@ -9,6 +9,8 @@
 #include <cstdint>
 #include <limits>
 
+#include "physics/internal/private.hpp"
+
 namespace physics {
 
 /// What a predicted event is about. The order is the tie order of simultaneous events.

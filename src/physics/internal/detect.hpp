@@ -7,8 +7,9 @@
 #include <cmath>
 #include <limits>
 
-#include "physics/motion.hpp"
-#include "physics/roots.hpp"
+#include "physics/internal/motion.hpp"
+#include "physics/internal/private.hpp"
+#include "physics/internal/roots.hpp"
 #include "physics/table.hpp"
 
 namespace physics::detect {

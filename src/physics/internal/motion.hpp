@@ -1,8 +1,9 @@
-// Closed-form motion of one ball between events (physics-model.md, "Motion between events").
+// Closed-form motion of one ball between events (docs/physics.md, "Motion between events").
 // Private to physics.
 #pragma once
 
 #include "physics/ball_state.hpp"
+#include "physics/internal/private.hpp"
 #include "physics/params.hpp"
 
 namespace physics::motion {
