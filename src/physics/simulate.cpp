@@ -88,6 +88,13 @@ FaceGroups::FaceGroups(const Table& table) {
     }
 }
 
+template <typename T, std::size_t N>
+constexpr std::array<T, N> filled(T v) {
+    std::array<T, N> a{};
+    a.fill(v);
+    return a;
+}
+
 /// A resolved event and the balls whose motion it changed (to be re-predicted).
 struct Resolved {
     Event event;
@@ -372,9 +379,12 @@ class Simulation {
 
     Resolved resolve_ball_ball(std::size_t a, std::size_t b, bool pushing) {
         BallState sa = state_now(a), sb = state_now(b);
+        const bool after_slow = now_ - slow_at_[a] < collide::kContactTime ||
+                                now_ - slow_at_[b] < collide::kContactTime;
         const double speed =
-            collide::ball_ball(params_, options_.models.ball_ball, sa, sb, pushing);
-        if (speed < collide::kInelasticSpeed && jammed(a, b)) {
+            collide::ball_ball(params_, options_.models.ball_ball, sa, sb, pushing, after_slow);
+        if (speed < collide::kSlowSpeed) slow_at_[a] = slow_at_[b] = now_;
+        if (speed < collide::kSlowSpeed && jammed(a, b)) {
             // Resolving a slow ball wedged between others one contact at a time converges too
             // slowly (nearly opposite contacts); a jammed ball stops.
             for (BallState* st : {&sa, &sb}) {
@@ -406,6 +416,7 @@ class Simulation {
         }
         const double speed = collide::cushion(params_, options_.models.cushion,
                                               table_.spec.cushion_height, toward, s, c.pushing);
+        if (speed < collide::kSlowSpeed) slow_at_[a] = now_;
         start_segment(a, s);
         Resolved r{make_event(EventType::cushion, {a}), {a}};
         r.event.speed = speed;
@@ -477,6 +488,8 @@ class Simulation {
     std::array<Live, kMaxBalls> live_{};
     std::array<Disc, kMaxBalls> disc_{};  ///< per ball, set by predict_pairs
     CandidateQueue queue_;
+    /// Per ball, the time of its latest slow contact (collide::kSlowSpeed), for after_slow.
+    std::array<double, kMaxBalls> slow_at_ = filled<double, kMaxBalls>(-kInf);
     static constexpr int kJamContacts = 16;
     double jam_time_ = -1.0;
     std::array<int, kMaxBalls> jam_count_{};

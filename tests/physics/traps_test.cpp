@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "physics/energy.hpp"
 #include "physics/rack.hpp"
@@ -44,6 +45,42 @@ TEST(Traps, FrozenRowTransmitsTheHit) {
     for (int k = 0; k < 4; ++k) EXPECT_LT(norm(after[static_cast<std::size_t>(k)].vel), 1e-4 * v0);
     EXPECT_NEAR(norm(after[4].vel), v0, 1e-4 * v0) << "the far ball leaves with all the speed";
     EXPECT_GT(shot.final_states().back().pos.x - balls.back().pos.x, 0.3);
+}
+
+TEST(Traps, NewtonsCradleWithRestitutionMatchesSequentialImpulses) {
+    // Three touching balls in a line, the first sent into the others as a stun ball at v, with
+    // e = 0.95. The pairwise sequential-impulse model: 0 hits 1, 1 hits 2, then 0 (left with
+    // (1 − e)/2·v) catches 1 (left with (1 − e)/2·(1 + e)/2·v) at 0.6 mm/s and they part: three
+    // collisions, final speeds ≈ (0.0244, 0.0250, 0.9506)·v. All three are at t = 0, touching,
+    // so the cloth has no time to act; head-on stun balls have no slip at the contact, so the
+    // ball–ball friction gives no impulse; each speed is then a few double operations of the
+    // model's closed form: kExact (relative). Afterwards the balls part for good (each behind
+    // is the slower, and the cloth slows equal balls alike).
+    const double v = 1.0, e = kParams.e_ball;
+    ASSERT_EQ(e, 0.95);
+    const Table t = build_table(*table_preset("unbounded"));
+    std::vector<BallState> balls{at(0, 0.0, 0.0), at(1, 2 * R, 0.0), at(2, 4 * R, 0.0)};
+    balls[0].vel = {v, 0.0};                                         // stun: no spin
+    const double v0 = 0.5 * (1 - e) * v, v1 = 0.5 * (1 + e) * v;     // 0 hits 1
+    const double v1b = 0.5 * (1 - e) * v1, v2 = 0.5 * (1 + e) * v1;  // 1 hits 2
+    const double mean = 0.5 * (v0 + v1b), gap = v0 - v1b;            // 0 catches 1
+    const double expected[3] = {mean - 0.5 * e * gap, mean + 0.5 * e * gap, v2};
+    ASSERT_NEAR(gap, 0.000625 * v, 1e-15);
+    for (BallBallModel model : {BallBallModel::frictional, BallBallModel::frictionless}) {
+        SimOptions o;
+        o.models.ball_ball = model;
+        const Shot shot = simulate(t, kParams, balls, nullptr, o);
+        int collisions = 0;
+        for (const Event& ev : shot.events()) collisions += ev.type == EventType::ball_ball;
+        EXPECT_EQ(collisions, 3);
+        const std::vector<BallState> after = shot.states_at(0.0);
+        for (std::size_t k = 0; k < 3; ++k) {
+            EXPECT_NEAR(after[k].vel.x, expected[k], 1e-12 * v) << "ball " << k;
+            EXPECT_EQ(after[k].vel.y, 0.0) << "ball " << k;
+        }
+        std::printf("cradle: %d collisions, speeds %.6f %.6f %.6f\n", collisions, after[0].vel.x,
+                    after[1].vel.x, after[2].vel.x);
+    }
 }
 
 TEST(Traps, RackedBallsAreFrozenAndTheBreakSpreadsThem) {
