@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -138,6 +139,24 @@ inline bool surely_apart(Vec2 dp, Vec2 dv, Vec2 da, double dist, double D, doubl
     return wp + (wa < 0.0 ? wa * h2 : 0.0) > clear * norm(dv);
 }
 
+/// For a pair touching with an overlap by rounding (p(0) = c[0] ≤ 0), in which the quartic
+/// has no downward crossing (it never turns positive, so has none to cross): true if p still
+/// falls more than `drop` below p(0) within the horizon, at its end or at a minimum (a root of
+/// p'). That is a contact now, reached through a gap that opens less than the overlap, or not
+/// at all: a slow separation pulled back, a third-order approach
+/// (Traps.TouchingPairSeparatingTooSlowlyToOpenIsStillAContact).
+inline bool sinks_from_overlap(const roots::Poly4& c, double h, double drop) {
+    if (!(h > 0.0 && h < kInf)) return false;
+    const double floor = c[0] - drop;
+    if (roots::eval(c, h) < floor) return true;
+    std::array<double, 4> at{};
+    const int n =
+        roots::sign_change_roots({c[1], 2.0 * c[2], 3.0 * c[3], 4.0 * c[4], 0.0}, 0.0, h, at);
+    for (int k = 0; k < n; ++k)
+        if (roots::eval(c, at[static_cast<std::size_t>(k)]) < floor) return true;
+    return false;
+}
+
 /// Contact of a moving point with a fixed or moving circle of radius D about another point:
 /// f(τ) = |Δp + Δv·τ + ½Δa·τ²|² − D², a quartic. `screened`: the caller has already found
 /// |Δp|² ≤ (D + reach)² (up to rounding), so the first test below could not reject.
@@ -162,7 +181,11 @@ inline Prediction circle_contact(Vec2 dp, Vec2 dv, Vec2 da, double D, double rea
     if (dist - D > 4.0 * kClear && surely_apart(dp, dv, da, dist, D, horizon)) return {};
     const roots::Poly4 c{dot(dp, dp) - D * D, 2.0 * dot(dp, dv), dot(dv, dv) + dot(dp, da),
                          dot(dv, da), 0.25 * dot(da, da)};
-    return {roots::first_downward_crossing(c, 0.0, horizon), false};
+    const double tau = roots::first_downward_crossing(c, 0.0, horizon);
+    if (std::isinf(tau) && dist - D <= kTouchGap && !(c[0] > 0.0) &&
+        sinks_from_overlap(c, horizon, 2.0 * dist * kTouchGap))
+        return {0.0, true};
+    return {tau, false};
 }
 
 }  // namespace detail
@@ -214,6 +237,12 @@ inline Prediction line(const Mover& m, const CushionLine& l, double R) {
     if (detail::quadratic_stays_positive(s0, s1, 0.5 * s2, m.horizon)) return {};
     if (detail::leaves_from_overlap(s0, s1, 0.5 * s2, m.horizon)) return {};
     const double t = roots::first_downward_crossing({s0, s1, 0.5 * s2, 0.0, 0.0}, 0.0, m.horizon);
+    // From an overlap by rounding the gap may never turn positive, and so have no crossing,
+    // and still close: a contact now (as circle_contact's sinks_from_overlap;
+    // Traps.BallLeavingARailTooSlowlyToOpenStaysOnTheBed).
+    if (std::isinf(t) && s0 <= 0.0 && s0 >= -1e-6 && within(0.0) && m.horizon < detail::kInf &&
+        detail::min_on(s0, s1, 0.5 * s2, m.horizon) < s0 - kTouchGap)
+        return {0.0, true};
     if (std::isinf(t) || !within(t)) return {};
     return {t, false};
 }
