@@ -35,8 +35,8 @@ inline constexpr double kSlowSpeed = 1e-3;
 double push_speed(const Params& p, const BallState& s, Vec2 toward);
 
 /// The normal speed after a contact (positive: separating), given the approach speed, the
-/// push speed (the relative one into the contact, ≥ 0, see push_speed), the restitution, and
-/// whether it is a pushing contact.
+/// push speed (≥ 0, from push_speed: see ball_ball.cpp), the restitution, and whether it is a
+/// pushing contact.
 double rebound_speed(double approach, double push, double restitution, bool pushing);
 
 /// Ball–ball collision of a and b (touching). Returns the normal approach speed.
