@@ -8,7 +8,7 @@
 //   non_finite  a NaN or infinite position, velocity or spin
 //   truncated   a shot cut at the event cap, or one that never ends
 //   events      a shot with more events than --max-events (chatter; 10,000 by default: the
-//               most seen in 4·10⁶ shots is 6,027, a ball wedged in a slow cluster after a
+//               most seen in 4·10⁶ shots is 4,094, a ball wedged in a slow cluster after a
 //               break, pushed and let go every few ms)
 // Prints one JSON line (shots, violations by kind, events, throughput) and exits 1 on any
 // violation, listing the first 20 on stderr with the command that reproduces the first shot
