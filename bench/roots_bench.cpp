@@ -2,7 +2,7 @@
 // |Δr(t)|² − (2R)² on a motion segment. Target: ≤ 100 ns median for a typical quartic.
 #include <benchmark/benchmark.h>
 
-#include "physics/roots.hpp"
+#include "physics/internal/roots.hpp"
 
 namespace {
 

@@ -6,9 +6,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "physics/collide.hpp"
 #include "physics/energy.hpp"
-#include "physics/motion.hpp"
+#include "physics/internal/collide.hpp"
+#include "physics/internal/motion.hpp"
 
 namespace physics::collide {
 
@@ -44,31 +44,37 @@ void cap_energy(const Params& p, BallState& a, BallState& b, double budget) {
 }  // namespace
 
 double push_speed(const Params& p, const BallState& s, Vec2 toward) {
-    const double accel = dot(motion::acceleration(p, s), toward);
-    return accel > 0 ? accel * std::min(kContactTime, motion::duration(p, s)) : 0.0;
+    return dot(motion::acceleration(p, s), toward) * std::min(kContactTime, motion::duration(p, s));
 }
 
 double rebound_speed(double approach, double push, double restitution, bool pushing) {
     if (pushing) return std::max(kSeparationSpeed, 0.5 * push);
     const bool resting = 2.0 * restitution * approach < push;
-    if (approach < kInelasticSpeed || resting) return 0.0;
-    return restitution * approach;
+    return resting ? 0.0 : restitution * approach;
 }
 
-double ball_ball(const Params& p, BallBallModel model, BallState& a, BallState& b, bool pushing) {
+double ball_ball(const Params& p, BallBallModel model, BallState& a, BallState& b, bool pushing,
+                 bool after_slow) {
     const double m = p.ball_mass, R = p.ball_radius;
     const double budget = kinetic_energy(p, a) + kinetic_energy(p, b);
     const Vec2 n = (1.0 / norm(b.pos - a.pos)) * (b.pos - a.pos);  // from a to b
     const double approach = std::max(0.0, dot(a.vel - b.vel, n));
-    const double push = push_speed(p, a, n) + push_speed(p, b, -n);
+    // Whether a bounce rests: the pair's relative acceleration into the contact (balls that
+    // slow alike do not push). How fast a pushing contact parts: each ball's push, summed, so
+    // that a ball wedged in a slow cluster is let go for long enough (fewer events, none of
+    // them found missing by the soak; the energy is capped below).
+    const double pa = push_speed(p, a, n), pb = push_speed(p, b, -n);
+    const double push = pushing ? std::max(0.0, pa) + std::max(0.0, pb) : std::max(0.0, pa + pb);
     // Normal impulse on b (and −J_n·n on a); equal masses, reduced mass m/2.
-    const double jn = 0.5 * m * (approach + rebound_speed(approach, push, p.e_ball, pushing));
+    const double rebound = after_slow && !pushing && approach < kSlowSpeed
+                               ? 0.0
+                               : rebound_speed(approach, push, p.e_ball, pushing);
+    const double jn = 0.5 * m * (approach + rebound);
     a.vel = a.vel - (jn / m) * n;
     b.vel = b.vel + (jn / m) * n;
-    // Contacts in the inelastic regime (slower than kInelasticSpeed, or pushing) are also
-    // frictionless: their friction impulse is negligible, and it would keep turning spin into
-    // approach between wedged balls.
-    const bool slow = pushing || approach < kInelasticSpeed;
+    // Slow and pushing contacts are frictionless: their friction impulse is negligible, and it
+    // would keep turning spin into approach between wedged balls.
+    const bool slow = pushing || approach < kSlowSpeed;
     if (model == BallBallModel::frictional && jn > 0 && !slow) {
         const Vec3 n3 = lift(n);
         // Slip of a's contact point (at +R·n) relative to b's (at −R·n).

@@ -8,15 +8,15 @@
 // |P_T| = min(μ·P_N, |s|/A), A = 7/(2m) (Han eqs. 16, 20). The cloth absorbs the vertical part
 // of the impulse. Two additions keep the event loop finite: P_N is at least what stops the
 // ball's horizontal approach (Han's impulse alone leaves it approaching when e < 1/cos²θ − 1),
-// and approaches slower than kInelasticSpeed are perfectly inelastic.
+// and slow contacts (kSlowSpeed) are perfectly inelastic and frictionless.
 //
 // `simple`: v_n → −e·v_n, tangential velocity and spin unchanged.
 #include <algorithm>
 #include <cmath>
 
-#include "physics/collide.hpp"
 #include "physics/energy.hpp"
-#include "physics/motion.hpp"
+#include "physics/internal/collide.hpp"
+#include "physics/internal/motion.hpp"
 
 namespace physics::collide {
 
@@ -33,15 +33,16 @@ double han2005(const Params& p, double h, Vec2 n, BallState& b, bool pushing) {
     const double c = vn * cos_t;
     // Impulse magnitude along −normal. The one that leaves the ball's horizontal normal speed
     // at −w is m·(v_n + w)/cos θ; w = 0 just stops the approach.
-    const double push = push_speed(p, b, n);
-    const double w = rebound_speed(vn, push, p.e_cushion, pushing);
+    const double push = std::max(0.0, push_speed(p, b, n));
+    const double w =
+        !pushing && vn < kSlowSpeed ? 0.0 : rebound_speed(vn, push, p.e_cushion, pushing);
     double pn = m * (vn + w) / cos_t;
     if (w > 0 && !pushing) pn = std::max((1.0 + p.e_cushion) * m * c, m * vn / cos_t);
     const Vec3 u = lift(b.vel) + cross(b.spin, contact);
     const Vec3 slip = u - dot(u, normal) * normal;
     const double s = norm(slip);
     Vec3 impulse = (-pn) * normal;
-    if (s > 0 && w > 0 && !pushing) {  // slow contacts are inelastic and frictionless
+    if (s > 0 && w > 0 && !pushing) {  // slow and resting contacts are frictionless
         const double pt = std::min(p.mu_cushion * pn, s / (3.5 / m));
         impulse = impulse - (pt / s) * slip;
     }
@@ -52,8 +53,10 @@ double han2005(const Params& p, double h, Vec2 n, BallState& b, bool pushing) {
 
 double simple(const Params& p, Vec2 n, BallState& b, bool pushing) {
     const double vn = std::max(0.0, dot(b.vel, n));
-    const double push = push_speed(p, b, n);
-    b.vel = b.vel - (vn + rebound_speed(vn, push, p.e_cushion, pushing)) * n;
+    const double push = std::max(0.0, push_speed(p, b, n));
+    const double w =
+        !pushing && vn < kSlowSpeed ? 0.0 : rebound_speed(vn, push, p.e_cushion, pushing);
+    b.vel = b.vel - (vn + w) * n;
     return vn;
 }
 
@@ -73,7 +76,7 @@ double cushion(const Params& p, CushionModel model, double nose_height, Vec2 tow
         }
     }
     // Leave the contact settled and not approaching (as for ball–ball contacts).
-    const double snap = (pushing || vn < kInelasticSpeed) ? motion::kSnapSlip : motion::kRollSlip;
+    const double snap = (pushing || vn < kSlowSpeed) ? motion::kSnapSlip : motion::kRollSlip;
     b = motion::settle(p, b, snap);
     for (int round = 0; round < 32; ++round) {
         const double again = dot(b.vel, toward);

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "physics/motion.hpp"
+#include "physics/internal/motion.hpp"
 
 namespace physics {
 

@@ -37,14 +37,14 @@
 // in Estrin's form (Knuth, TAOCP vol. 2, §4.6.4), which shortens the dependency chain of each
 // Newton step, and whose rounding error is no larger than Horner's. No allocation, no
 // exceptions, no FMA: the same input gives the same bits everywhere.
-#include "physics/roots.hpp"
+#include "physics/internal/roots.hpp"
 
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 
-#include "physics/roots_convex_pieces.hpp"
+#include "physics/internal/roots_convex_pieces.hpp"
 
 namespace physics::roots {
 

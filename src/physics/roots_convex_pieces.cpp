@@ -31,7 +31,7 @@
 // the build for CPUs that have it: the exact error of a product in the compensated value, the
 // same double as Dekker's TwoProduct gives without it (below). Same input, same bits, on any
 // x86-64.
-#include "physics/roots_convex_pieces.hpp"
+#include "physics/internal/roots_convex_pieces.hpp"
 
 #include <cmath>
 #include <limits>
@@ -105,7 +105,7 @@ namespace {
     return split_value(c, t);
 }
 }  // namespace
-#include "physics/roots_convex_pieces_body.inl"
+#include "physics/internal/roots_convex_pieces_body.inl"
 }  // namespace split_product
 
 #if COOLAABER_FUSED_PRODUCT
@@ -159,7 +159,7 @@ namespace {
 }
 
 }  // namespace
-#include "physics/roots_convex_pieces_body.inl"
+#include "physics/internal/roots_convex_pieces_body.inl"
 }  // namespace fused_product
 #pragma GCC pop_options
 

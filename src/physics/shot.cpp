@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "physics/motion.hpp"
+#include "physics/internal/motion.hpp"
 
 namespace physics {
 

@@ -184,29 +184,46 @@ Table build_table(const TableSpec& spec) {
     return t;
 }
 
+namespace {
+
+constexpr double kSurfaceTolerance = 1e-9;  ///< (unit: m) touching a cushion is on the bed
+
+/// Whether p is at a pocket's mouth: in front of its drop line; if past the mouth line (in the
+/// throat), between the nose tips; if in front of it, by at most R and at most R beyond either
+/// tip (a ball resting against a nose). Farther out, a centre off the rectangle is in a rail.
+bool at_mouth(const Pocket& pk, Vec2 p, double R) {
+    const Vec2 mid = 0.5 * (pk.mouth_a + pk.mouth_b);
+    const double half = 0.5 * norm(pk.mouth_b - pk.mouth_a);
+    if (dot(p - pk.drop_point, pk.inward) >= 0) return false;
+    const double past = dot(p - mid, pk.inward);
+    if (past < -(R + kSurfaceTolerance)) return false;
+    return std::fabs(cross(pk.inward, p - mid)) < (past > 0 ? half : half + R);
+}
+
+/// Whether a ball at p is clear of the rails and of the facings and noses of pocket `pk`.
+bool clear_of_cushions(const Table& t, const Pocket& pk, Vec2 p, double R) {
+    for (const CushionLine& l : t.lines) {
+        if (l.pocket != pk.id && l.rail < 0) continue;
+        const double along = dot(p - l.a, l.dir);
+        const double off = dot(p - l.a, l.normal);
+        if (along >= 0 && along <= l.length && off < R - kSurfaceTolerance) return false;
+    }
+    for (const JawNose& n : t.noses)
+        if (n.pocket == pk.id && norm(p - n.centre) < R + n.radius - kSurfaceTolerance)
+            return false;
+    return true;
+}
+
+}  // namespace
+
 bool Table::on_surface(Vec2 p, double R) const {
     if (!std::isfinite(p.x) || !std::isfinite(p.y)) return false;
     if (!spec.bounded) return true;
-    constexpr double tol = 1e-9;
+    constexpr double tol = kSurfaceTolerance;
     const double L = spec.length, W = spec.width;
     if (p.x >= R - tol && p.x <= L - R + tol && p.y >= R - tol && p.y <= W - R + tol) return true;
-    // In a pocket's mouth, in front of its drop line, clear of its facings and noses.
-    for (const Pocket& pk : pockets) {
-        Vec2 mid = 0.5 * (pk.mouth_a + pk.mouth_b);
-        double half = 0.5 * norm(pk.mouth_b - pk.mouth_a);
-        if (dot(p - pk.drop_point, pk.inward) >= 0) continue;
-        if (std::fabs(cross(pk.inward, p - mid)) >= half) continue;
-        bool clear = true;
-        for (const CushionLine& l : lines) {
-            if (l.pocket != pk.id && l.rail < 0) continue;
-            double along = dot(p - l.a, l.dir);
-            double off = dot(p - l.a, l.normal);
-            if (along >= 0 && along <= l.length && off < R - tol) clear = false;
-        }
-        for (const JawNose& n : noses)
-            if (n.pocket == pk.id && norm(p - n.centre) < R + n.radius - tol) clear = false;
-        if (clear) return true;
-    }
+    for (const Pocket& pk : pockets)
+        if (at_mouth(pk, p, R) && clear_of_cushions(*this, pk, p, R)) return true;
     return false;
 }
 

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "physics/roots.hpp"
+#include "physics/internal/roots.hpp"
 
 namespace physics::roots::test {
 

@@ -3,7 +3,7 @@
 // its roots are correctly rounded where they are well conditioned (the last step uses the
 // compensated value of p), and it leaves to the walk what it must (touching starts, an infinite
 // horizon). The public contract is tested in roots_test.cpp, through first_downward_crossing.
-#include "physics/roots_convex_pieces.hpp"
+#include "physics/internal/roots_convex_pieces.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,7 +16,7 @@
 #include <string>
 
 #include "contact_quartics.hpp"
-#include "physics/roots.hpp"
+#include "physics/internal/roots.hpp"
 
 namespace physics::roots {
 namespace {

@@ -16,7 +16,7 @@
 #include <string>
 
 #include "contact_quartics.hpp"
-#include "physics/roots_convex_pieces.hpp"
+#include "physics/internal/roots_convex_pieces.hpp"
 
 namespace physics::roots {
 namespace {

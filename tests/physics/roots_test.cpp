@@ -11,7 +11,7 @@
 //    samples p in double can promise for a near-double or triple root;
 //  * where the noise band holds one true sign change, exactly one root is reported there;
 //    where it holds a cluster (or a near-touch), the count has the same parity as the truth.
-#include "physics/roots.hpp"
+#include "physics/internal/roots.hpp"
 
 #include <gtest/gtest.h>
 

@@ -3,10 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "physics/layout.hpp"
+#include "physics/rack.hpp"
 
 namespace physics {
 namespace {
@@ -98,6 +100,56 @@ TEST(Table, PlayingSurface) {
     }();
     EXPECT_EQ(closed.lines.size(), 6u);
     EXPECT_TRUE(closed.pockets.empty());
+}
+
+/// The least distance from p to the segment [a, b].
+double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
+    const Vec2 d = b - a;
+    const double along = std::clamp(dot(p - a, d) / dot(d, d), 0.0, 1.0);
+    return norm(p - (a + along * d));
+}
+
+TEST(Table, BallEmbeddedInAJawAtAPocketMouthIsNotOnTheBed) {
+    // Half inside the S pocket's east jaw, on the NW corner pocket's diagonal (issue 45, part
+    // 2, item 3): once accepted, it travelled inside the S–SE rail. Its mirror images too.
+    const Table t = build_table(*table_preset("9ft"));
+    const double R = 0.028575, L = t.length(), W = t.width();
+    for (const Vec2 p :
+         {Vec2{1.338, 0.0}, Vec2{L - 1.338, 0.0}, Vec2{1.338, W}, Vec2{L - 1.338, W}})
+        EXPECT_FALSE(t.on_surface(p, R)) << p.x << ", " << p.y;
+}
+
+TEST(Table, OnTheBedMeansClearOfEveryCushion) {
+    // Random points on and around each table: every one on_surface accepts keeps the ball (its
+    // centre) at least R from every cushion face and R + r from every jaw nose, up to the
+    // touching tolerance (1e-9 m), whichever pocket's mouth it is in.
+    const double R = 0.028575, tol = 1e-9;
+    for (const char* preset : {"7ft", "8ft", "9ft"}) {
+        const Table t = build_table(*table_preset(preset));
+        SplitMix64 rng(45);
+        int accepted = 0;
+        for (int k = 0; k < 400000; ++k) {
+            // Half the points within 0.1 m of a cushion line, where the pockets are.
+            const Vec2 p = k % 2 == 0
+                               ? Vec2{-0.1 + rng.uniform() * (t.length() + 0.2),
+                                      -0.1 + rng.uniform() * (t.width() + 0.2)}
+                               : [&] {
+                                     const CushionLine& l = t.lines[rng.below(t.lines.size())];
+                                     return l.a + (rng.uniform() * l.length) * l.dir +
+                                            (rng.uniform() * 0.1 - 0.05) * l.normal;
+                                 }();
+            if (!t.on_surface(p, R)) continue;
+            ++accepted;
+            for (const CushionLine& l : t.lines)
+                ASSERT_GE(distance_to_segment(p, l.a, l.b), R - tol)
+                    << preset << " (" << p.x << ", " << p.y << ") rail " << l.rail << " pocket "
+                    << l.pocket;
+            for (const JawNose& n : t.noses)
+                ASSERT_GE(norm(p - n.centre), R + n.radius - tol)
+                    << preset << " (" << p.x << ", " << p.y << ") nose of pocket " << n.pocket;
+        }
+        EXPECT_GT(accepted, 100000) << preset;  // the test looks at the bed, not at nothing
+    }
 }
 
 TEST(Table, InvalidSpecsNameTheField) {

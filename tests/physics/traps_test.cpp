@@ -2,7 +2,9 @@
 // chatter, motion parallel to a rail.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "physics/energy.hpp"
 #include "physics/rack.hpp"
@@ -44,6 +46,42 @@ TEST(Traps, FrozenRowTransmitsTheHit) {
     for (int k = 0; k < 4; ++k) EXPECT_LT(norm(after[static_cast<std::size_t>(k)].vel), 1e-4 * v0);
     EXPECT_NEAR(norm(after[4].vel), v0, 1e-4 * v0) << "the far ball leaves with all the speed";
     EXPECT_GT(shot.final_states().back().pos.x - balls.back().pos.x, 0.3);
+}
+
+TEST(Traps, NewtonsCradleWithRestitutionMatchesSequentialImpulses) {
+    // Three touching balls in a line, the first sent into the others as a stun ball at v, with
+    // e = 0.95. The pairwise sequential-impulse model: 0 hits 1, 1 hits 2, then 0 (left with
+    // (1 − e)/2·v) catches 1 (left with (1 − e)/2·(1 + e)/2·v) at 0.6 mm/s and they part: three
+    // collisions, final speeds ≈ (0.0244, 0.0250, 0.9506)·v. All three are at t = 0, touching,
+    // so the cloth has no time to act; head-on stun balls have no slip at the contact, so the
+    // ball–ball friction gives no impulse; each speed is then a few double operations of the
+    // model's closed form: kExact (relative). Afterwards the balls part for good (each behind
+    // is the slower, and the cloth slows equal balls alike).
+    const double v = 1.0, e = kParams.e_ball;
+    ASSERT_EQ(e, 0.95);
+    const Table t = build_table(*table_preset("unbounded"));
+    std::vector<BallState> balls{at(0, 0.0, 0.0), at(1, 2 * R, 0.0), at(2, 4 * R, 0.0)};
+    balls[0].vel = {v, 0.0};                                         // stun: no spin
+    const double v0 = 0.5 * (1 - e) * v, v1 = 0.5 * (1 + e) * v;     // 0 hits 1
+    const double v1b = 0.5 * (1 - e) * v1, v2 = 0.5 * (1 + e) * v1;  // 1 hits 2
+    const double mean = 0.5 * (v0 + v1b), gap = v0 - v1b;            // 0 catches 1
+    const double expected[3] = {mean - 0.5 * e * gap, mean + 0.5 * e * gap, v2};
+    ASSERT_NEAR(gap, 0.000625 * v, 1e-15);
+    for (BallBallModel model : {BallBallModel::frictional, BallBallModel::frictionless}) {
+        SimOptions o;
+        o.models.ball_ball = model;
+        const Shot shot = simulate(t, kParams, balls, nullptr, o);
+        int collisions = 0;
+        for (const Event& ev : shot.events()) collisions += ev.type == EventType::ball_ball;
+        EXPECT_EQ(collisions, 3);
+        const std::vector<BallState> after = shot.states_at(0.0);
+        for (std::size_t k = 0; k < 3; ++k) {
+            EXPECT_NEAR(after[k].vel.x, expected[k], 1e-12 * v) << "ball " << k;
+            EXPECT_EQ(after[k].vel.y, 0.0) << "ball " << k;
+        }
+        std::printf("cradle: %d collisions, speeds %.6f %.6f %.6f\n", collisions, after[0].vel.x,
+                    after[1].vel.x, after[2].vel.x);
+    }
 }
 
 TEST(Traps, RackedBallsAreFrozenAndTheBreakSpreadsThem) {
@@ -126,6 +164,77 @@ TEST(Traps, SpinDrivingABallIntoAFrozenBallEndsInFewEvents) {
     const auto fin = shot.final_states();
     EXPECT_GT(fin[1].pos.x, 2 * R + 0.01) << "the pushed ball moves on";
     EXPECT_GE(norm(fin[1].pos - fin[0].pos), 2 * R - 1e-9);
+}
+
+TEST(Traps, TouchingPairSeparatingTooSlowlyToOpenIsStillAContact) {
+    // Found by the soak (coolaaber-soak --seed 2026 --from 77190, before the cradle fix): a
+    // ball touching another, overlapping it by rounding (a few ulps of 2R), leaving it at
+    // 1e-8 m/s while its slip's friction (μs·g ≈ 2 m/s²) drives it back. The gap would peak at
+    // ~3e-17 m, below the overlap, so the contact quartic never turns positive and has no
+    // downward crossing: the ball drove 52 µm into the other. It is a pushing contact now.
+    const Table t = build_table(*table_preset("unbounded"));
+    const double D = 2 * R, slip = 0.05;
+    for (int ulps : {0, 1, 4, 11, 30}) {
+        double x = D;
+        for (int k = 0; k < ulps; ++k) x = std::nextafter(x, 0.0);
+        BallState b = at(1, x, 0.0);
+        b.vel = {1e-8, 0.0133};
+        b.spin = {-0.0133 / R, -(slip - 1e-8) / R, 0.0};  // contact slip (0.05, 0) m/s: pulls -x
+        const std::vector<BallState> balls{at(0, 0.0, 0.0), b};
+        const Shot shot = simulate(t, kParams, balls, nullptr);
+        EXPECT_FALSE(shot.truncated());
+        double worst = 0.0;
+        for (double time = 0.0; time < 0.2; time += 1e-5) {
+            const std::vector<BallState> st = shot.states_at(time);
+            worst = std::min(worst, norm(st[1].pos - st[0].pos) - D);
+        }
+        EXPECT_GE(worst, -1e-9) << ulps << " ulps of overlap at the start";
+    }
+}
+
+TEST(Traps, TouchingPairClosingAtThirdOrderIsAContact) {
+    // Found by the soak (coolaaber-soak --seed 7 --from 502580): two sliding balls left
+    // touching (overlapping by 4.9e-15 m) by a burst of contacts, with no normal speed and a
+    // normal acceleration that all but cancels (|Δv|² = −Δp·Δa to 2e-5 relative), so the gap
+    // closes at third order, through Δv·Δa < 0. The quartic never turns positive, so it had no
+    // crossing: the balls sank 0.7 µm into each other. The states, as the engine had them.
+    const Table t = build_table(*table_preset("9ft"));
+    BallState a = at(0, 1.9141790957667011, 0.70408281725002719);
+    a.vel = {0.33586800526269461, 0.31541061165386619};
+    a.spin = {4.6008868763882127, 28.321252114685976, -1.7776498095597364};
+    BallState b = at(7, 1.9544933518262815, 0.6635749999999947);
+    b.vel = {0.0025388502720917788, -0.016325774522407448};
+    b.spin = {-1.1812765420892579, -0.98397347096152687, 0.20754515837659637};
+    const std::vector<BallState> balls{a, b};
+    const Shot shot = simulate(t, kParams, balls, nullptr);
+    EXPECT_FALSE(shot.truncated());
+    double worst = 0.0;
+    for (double time = 0.0; time < 0.05; time += 1e-5) {
+        const std::vector<BallState> st = shot.states_at(time);
+        worst = std::min(worst, norm(st[1].pos - st[0].pos) - 2 * R);
+    }
+    EXPECT_GE(worst, -1e-9);
+}
+
+TEST(Traps, BallLeavingARailTooSlowlyToOpenStaysOnTheBed) {
+    // The same at a rail: a ball on the south rail's face (overlapping it by rounding), leaving
+    // it at 1e-8 m/s, its slip's friction driving it back into the rail.
+    const Table t = build_table(*table_preset("9ft"));
+    const double slip = 0.05;
+    for (int ulps : {0, 1, 4, 11, 30}) {
+        double y = R;
+        for (int k = 0; k < ulps; ++k) y = std::nextafter(y, 0.0);
+        BallState b = at(0, 0.6, y);
+        b.vel = {0.0133, 1e-8};
+        b.spin = {(slip - 1e-8) / R, 0.0133 / R, 0.0};  // contact slip (0, 0.05) m/s: pulls -y
+        const std::vector<BallState> balls{b};
+        const Shot shot = simulate(t, kParams, balls, nullptr);
+        EXPECT_FALSE(shot.truncated());
+        double lowest = R;
+        for (double time = 0.0; time < 0.2; time += 1e-5)
+            lowest = std::min(lowest, shot.state_at(0, time).pos.y);
+        EXPECT_GE(lowest, R - 1e-9) << ulps << " ulps into the rail at the start";
+    }
 }
 
 TEST(Traps, SlowBallNudgingARailComesToRest) {

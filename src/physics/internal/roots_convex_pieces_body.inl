@@ -255,82 +255,93 @@ Answer convex_piece(const Poly4& c, double x, Sample sl, double e, const Probe* 
     return unsure();
 }
 
-}  // namespace
-
-Answer first_downward_crossing(const Poly4& c, double lo, double hi) {
-    double x = lo;
-    // p at x. At lo = 0 (the physics' case) the Taylor coefficients are the c_i themselves:
-    // the same values as sample() gives there, for finite ones, without its latency. Only c1
-    // is checked here: a non-finite c0 fails the test of p(lo) below, and a non-finite c2, c3
-    // or c4 (c4 ≠ 0) makes the discriminant of p'' non-finite, which is answered `unsure`.
-    Sample sx;
+/// p and its first two derivatives at lo, where p(lo) > 0 and all is finite; else false (the
+/// walk decides). At lo = 0 (the physics' case) the Taylor coefficients are the c_i themselves,
+/// the same values as sample() gives there, without its latency. Only c1 is checked there: a
+/// non-finite c0 fails the test of p(lo), and a non-finite c2, c3 or c4 (c4 ≠ 0) makes the
+/// discriminant of p'' non-finite, which is answered `unsure`.
+[[gnu::always_inline]] inline bool sample_start(const Poly4& c, double lo, double hi, Sample& sx) {
     if (lo == 0.0) {
-        if (!std::isfinite(c[1])) return unsure();
+        if (!std::isfinite(c[1])) return false;
         sx = {c[0], c[1], c[2]};
     } else {
         sx = sample(c, lo);
     }
-    bool sampled = true;
-    if (!(sx.f > 0.0) || !std::isfinite(sx.f) || !std::isfinite(hi)) return unsure();
+    return sx.f > 0.0 && std::isfinite(sx.f) && std::isfinite(hi);
+}
 
-    // The usual contact (a ball–ball quartic, c4 = |Δa|²/4 > 0, approaching: p'(0) < 0) is
-    // decided before the inflection points are computed, where it can be: the first convex
-    // piece's first point y, sampled; if p(y) < 0 and p'' > 0 on [0, y], [0, y] holds the first
-    // crossing as its one sign change, exactly as convex_piece() would find it below (the same
-    // point, sample and bracket: the same bits), without the work of the pieces.
-    Probe probe{};
-    bool probed = false;
-    if (lo == 0.0 && sx.df < 0.0 && c[4] > 0.0) {
-        probe.point = first_point(c, 0.0, sx);
-        const double y = probe.point.y;
-        if (y > 0.0 && y < hi) {
-            probe.at_y = sample(c, y);
-            probed = true;
-            const Sample& sy = probe.at_y;
-            if (!(sy.f > 0.0) && convex_up_to(c, y, sy)) {
-                if (!clearly_negative(c, y, sy.f)) return unsure();
-                const double start = probe.point.start;
-                return refine(c, 0.0, y, start > 0.0 && start < y ? start : start_left_of(y, sy));
-            }
-            // Past the minimum (p' > 0) with a dip that its Taylor parabola puts near or below 0
-            // (a grazing contact; a miss's stays well above), convex_piece's next point is the
-            // Newton step on p' back towards the minimum, y2 < y, still where p'' > 0 is shown:
-            // if p(y2) < 0, it would refine [0, y2] from there (its bound at y cannot have
-            // ruled out a crossing that p(y2) < 0 proves), and so is that done here.
-            if (sy.f > 0.0 && sy.df > 0.0 && sy.half_d2f > 0.0 &&
-                sy.df * sy.df >= 2.0 * sy.half_d2f * sy.f && convex_up_to(c, y, sy)) {
-                const double y2 = y + -sy.df / (2.0 * sy.half_d2f);
-                if (y2 > 0.0 && y2 < y) {
-                    const Sample s2 = sample(c, y2);
-                    if (!(s2.f > 0.0)) {
-                        if (!clearly_negative(c, y2, s2.f)) return unsure();
-                        return refine(c, 0.0, y2, start_left_of(y2, s2));
-                    }
-                }
+/// The usual contact (a ball–ball quartic, c4 = |Δa|²/4 > 0, approaching: p'(0) < 0), decided
+/// before the inflection points are computed where it can be: the first convex piece's first
+/// point y, sampled; if p(y) < 0 and p'' > 0 on [0, y], [0, y] holds the first crossing as its
+/// one sign change, exactly as convex_piece() would find it (the same point, sample and
+/// bracket: the same bits), without the work of the pieces. Sets `answer` where decided; fills
+/// `probe` where y was sampled, for convex_piece to start from.
+[[gnu::always_inline]] inline bool usual_contact(const Poly4& c, double hi, const Sample& sx,
+                                                 Probe& probe, bool& probed, Answer& answer) {
+    probe.point = first_point(c, 0.0, sx);
+    const double y = probe.point.y;
+    if (!(y > 0.0 && y < hi)) return false;
+    probe.at_y = sample(c, y);
+    probed = true;
+    const Sample& sy = probe.at_y;
+    if (!(sy.f > 0.0) && convex_up_to(c, y, sy)) {
+        if (!clearly_negative(c, y, sy.f)) {
+            answer = unsure();
+            return true;
+        }
+        const double start = probe.point.start;
+        answer = refine(c, 0.0, y, start > 0.0 && start < y ? start : start_left_of(y, sy));
+        return true;
+    }
+    // Past the minimum (p' > 0) with a dip that its Taylor parabola puts near or below 0 (a
+    // grazing contact; a miss's stays well above), convex_piece's next point is the Newton step
+    // on p' back towards the minimum, y2 < y, still where p'' > 0 is shown: if p(y2) < 0, it
+    // would refine [0, y2] from there (its bound at y cannot have ruled out a crossing that
+    // p(y2) < 0 proves), and so is that done here.
+    if (sy.f > 0.0 && sy.df > 0.0 && sy.half_d2f > 0.0 &&
+        sy.df * sy.df >= 2.0 * sy.half_d2f * sy.f && convex_up_to(c, y, sy)) {
+        const double y2 = y + -sy.df / (2.0 * sy.half_d2f);
+        if (y2 > 0.0 && y2 < y) {
+            const Sample s2 = sample(c, y2);
+            if (!(s2.f > 0.0)) {
+                answer = clearly_negative(c, y2, s2.f) ? refine(c, 0.0, y2, start_left_of(y2, s2))
+                                                       : unsure();
+                return true;
             }
         }
     }
+    return false;
+}
 
-    // The roots of p'' = 2c2 + 6c3·t + 12c4·t² inside (lo, hi), by the cancellation-free closed
-    // form (Press et al. §5.6): the one of smaller magnitude as c/q, the other from the vertex
-    // (a tiny c4 sends it far away, harmlessly).
-    double ends[3];
+/// The ends of the pieces: the roots of p'' = 2c2 + 6c3·t + 12c4·t² inside (lo, hi), by the
+/// cancellation-free closed form (Press et al. §5.6: the one of smaller magnitude as c/q, the
+/// other from the vertex; a tiny c4 sends it far away, harmlessly), then hi. Returns their
+/// count, or 0 where the discriminant is not finite (`unsure`).
+[[gnu::always_inline]] inline int piece_ends(const Poly4& c, double lo, double hi,
+                                             double (&ends)[3]) {
     int n_ends = 0;
-    {
-        const double qa = 12.0 * c[4], qb = 6.0 * c[3], qc = 2.0 * c[2];
-        const double disc = qb * qb - 4.0 * qa * qc;
-        if (!std::isfinite(disc)) return unsure();
-        if (disc > 0.0) {
-            const double q = -0.5 * (qb + std::copysign(std::sqrt(disc), qb));
-            const double near = qc / q;
-            const double far = 2.0 * (-qb / (2.0 * qa)) - near;
-            const double r0 = near < far ? near : far, r1 = near < far ? far : near;
-            if (r0 > lo && r0 < hi) ends[n_ends++] = r0;
-            if (r1 > lo && r1 < hi && r1 != r0) ends[n_ends++] = r1;
-        }
+    const double qa = 12.0 * c[4], qb = 6.0 * c[3], qc = 2.0 * c[2];
+    const double disc = qb * qb - 4.0 * qa * qc;
+    if (!std::isfinite(disc)) return 0;
+    if (disc > 0.0) {
+        const double q = -0.5 * (qb + std::copysign(std::sqrt(disc), qb));
+        const double near = qc / q;
+        const double far = 2.0 * (-qb / (2.0 * qa)) - near;
+        const double r0 = near < far ? near : far, r1 = near < far ? far : near;
+        if (r0 > lo && r0 < hi) ends[n_ends++] = r0;
+        if (r1 > lo && r1 < hi && r1 != r0) ends[n_ends++] = r1;
     }
     ends[n_ends++] = hi;
+    return n_ends;
+}
 
+/// Goes right through the pieces from x (p(x) = sx.f > 0), each concave or convex, until one
+/// holds a crossing or the last ends with p > 0. `probe`: the first piece's first point, if
+/// sampled (usual_contact).
+[[gnu::always_inline]] inline Answer walk_pieces(const Poly4& c, double x, Sample sx,
+                                                 const double (&ends)[3], int n_ends,
+                                                 const Probe* probe) {
+    bool sampled = true;
     for (int k = 0; k < n_ends; ++k) {
         const double e = ends[k];
         const double mid = x + 0.5 * (e - x);
@@ -351,13 +362,30 @@ Answer first_downward_crossing(const Poly4& c, double lo, double hi) {
             sx = sample(c, x);
             if (!(sx.f > 0.0)) return unsure();
         }
-        const Answer piece = convex_piece(c, x, sx, e, probed && k == 0 ? &probe : nullptr);
+        const Answer piece = convex_piece(c, x, sx, e, k == 0 ? probe : nullptr);
         if (piece.outcome != Outcome::none) return piece;
         // p > 0 up to e; the next piece is concave and needs only the value at its far end.
         x = e;
         sampled = false;
     }
     return {Outcome::none};
+}
+
+}  // namespace
+
+Answer first_downward_crossing(const Poly4& c, double lo, double hi) {
+    Sample sx;
+    if (!sample_start(c, lo, hi, sx)) return unsure();
+    Probe probe{};
+    bool probed = false;
+    if (lo == 0.0 && sx.df < 0.0 && c[4] > 0.0) {
+        Answer answer;
+        if (usual_contact(c, hi, sx, probe, probed, answer)) return answer;
+    }
+    double ends[3];
+    const int n_ends = piece_ends(c, lo, hi, ends);
+    if (n_ends == 0) return unsure();
+    return walk_pieces(c, lo, sx, ends, n_ends, probed ? &probe : nullptr);
 }
 
 /// This build's compensated value of p(t) (for the test that compares the builds).

@@ -3,7 +3,8 @@
 // or concave, and each piece is decided without the roots of p'. Used by roots.cpp only.
 #pragma once
 
-#include "physics/roots.hpp"
+#include "physics/internal/private.hpp"
+#include "physics/internal/roots.hpp"
 
 namespace physics::roots::convex_pieces {
 

@@ -5,6 +5,8 @@
 
 #include <array>
 
+#include "physics/internal/private.hpp"
+
 namespace physics::roots {
 
 /// Coefficients of p(t) = c[0] + c[1]·t + c[2]·t² + c[3]·t³ + c[4]·t⁴ (unused ones zero).

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "physics/ball_state.hpp"
+#include "physics/internal/private.hpp"
 #include "physics/params.hpp"
 
 namespace physics::motion {
