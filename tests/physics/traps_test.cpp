@@ -167,11 +167,11 @@ TEST(Traps, SpinDrivingABallIntoAFrozenBallEndsInFewEvents) {
 }
 
 TEST(Traps, TouchingPairSeparatingTooSlowlyToOpenIsStillAContact) {
-    // Found by the soak (coolaaber-soak --seed 2026 --from 77190, before the cradle fix): a
-    // ball touching another, overlapping it by rounding (a few ulps of 2R), leaving it at
-    // 1e-8 m/s while its slip's friction (μs·g ≈ 2 m/s²) drives it back. The gap would peak at
-    // ~3e-17 m, below the overlap, so the contact quartic never turns positive and has no
-    // downward crossing: the ball drove 52 µm into the other. It is a pushing contact now.
+    // A ball touching another, overlapping it by rounding (a few ulps of 2R), leaving it at
+    // 1e-8 m/s while its slip's friction (μs·g ≈ 2 m/s²) drives it back (a case the soak
+    // found). The gap would peak at ~3e-17 m, below the overlap, so the contact quartic never
+    // turns positive and has no downward crossing; unless taken as a pushing contact, the ball
+    // drives 52 µm into the other.
     const Table t = build_table(*table_preset("unbounded"));
     const double D = 2 * R, slip = 0.05;
     for (int ulps : {0, 1, 4, 11, 30}) {
