@@ -315,6 +315,10 @@ Session Session::from_json(const std::string& text) {
     s.history_ = read_history(root.at("history"), t, s.config_.keep_events, s.rack_number_);
     if (s.winner_ && (s.history_.empty() || !s.history_.back().verdict.game_over))
         root.at("winner").fail("the game is over, but the last shot of the history did not end it");
+    if (!s.history_.empty() && s.history_.back().verdict.game_over &&
+        s.history_.back().verdict.winner != s.winner_)
+        root.at("winner").fail(
+            "the last shot of the history ended the game with another winner: give that one");
     if (s.pending_ &&
         (s.history_.empty() || !s.history_.back().verdict.choice || s.history_.back().choice))
         root.at("pending").fail("the last shot of the history offers no open choice");

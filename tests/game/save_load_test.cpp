@@ -245,6 +245,39 @@ TEST(SaveLoad, CorruptDocumentsNameTheField) {
     }
 }
 
+// A game played to its end by random players.
+Session finished(rules::Game game) {
+    Session s(config_for(game, 21));
+    RandomPlayer a(5), b(6);
+    for (int shots = 0; shots < 2000 && s.phase() != Phase::game_over; ++shots) {
+        const Decision d = (s.to_act() == A ? a : b).decide(s);
+        if (d.choice) {
+            s.choose(*d.choice);
+            continue;
+        }
+        if (d.cue_pos) s.place_cue_ball(*d.cue_pos);
+        s.set_call(d.call);
+        if (d.push_out) s.set_push_out(true);
+        s.play(d.stroke);
+    }
+    EXPECT_EQ(s.phase(), Phase::game_over);
+    return s;
+}
+
+TEST(SaveLoad, TheWinnerMustBeTheOneTheLastShotGave) {
+    const json valid = json::parse(finished(rules::Game::nine_ball).to_json());
+    ASSERT_TRUE(valid["winner"].is_string());
+    json no_winner = valid;
+    no_winner["winner"] = nullptr;
+    EXPECT_EQ(load_error(no_winner.dump()).rfind("session.winner: ", 0), 0u)
+        << load_error(no_winner.dump());
+    json other = valid;
+    other["winner"] = valid["winner"] == "A" ? "B" : "A";
+    EXPECT_EQ(load_error(other.dump()).rfind("session.winner: ", 0), 0u)
+        << load_error(other.dump());
+    EXPECT_EQ(load_error(valid.dump()), "(loaded)");
+}
+
 TEST(SaveLoad, MalformedText) {
     const std::string valid = in_progress().to_json();
     EXPECT_EQ(load_error("").rfind("session: not valid JSON", 0), 0u);
