@@ -1,7 +1,10 @@
 #include "app/settings.hpp"
 
+#include <fcntl.h>
 #include <fmt/format.h>
+#include <stdio.h>
 
+#include <cerrno>
 #include <cstdlib>
 #include <nlohmann/json.hpp>
 
@@ -110,14 +113,33 @@ Settings settings_from_json(const std::string& text) {
     return s;
 }
 
+namespace {
+
+enum class Renamed { yes, name_taken, failed };
+
+// Renames `from` to `to` unless `to` exists: never replaces a file kept aside before, even by
+// another instance of the game starting at the same moment.
+Renamed rename_no_replace(const std::filesystem::path& from, const std::filesystem::path& to) {
+    if (::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_NOREPLACE) == 0)
+        return Renamed::yes;
+    if (errno == EEXIST) return Renamed::name_taken;
+    if (errno != EINVAL && errno != ENOSYS) return Renamed::failed;
+    // A file system without RENAME_NOREPLACE: check, then rename.
+    std::error_code ec;
+    if (std::filesystem::exists(to, ec)) return Renamed::name_taken;
+    std::filesystem::rename(from, to, ec);
+    return ec ? Renamed::failed : Renamed::yes;
+}
+
+}  // namespace
+
 std::filesystem::path keep_aside(const std::filesystem::path& path) {
     for (int k = 1; k < 1000; ++k) {
         std::filesystem::path aside = path;
         aside += k == 1 ? std::string(".bad") : fmt::format(".bad-{}", k);
-        std::error_code ec;
-        if (std::filesystem::exists(aside, ec)) continue;
-        std::filesystem::rename(path, aside, ec);
-        return ec ? std::filesystem::path() : aside;
+        const Renamed r = rename_no_replace(path, aside);
+        if (r == Renamed::yes) return aside;
+        if (r == Renamed::failed) return {};
     }
     return {};
 }
