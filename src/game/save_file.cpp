@@ -2,6 +2,7 @@
 // renames it over the target (atomic on POSIX file systems), after checking that the text reads
 // back; loading only reads.
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <atomic>
 #include <cerrno>
@@ -37,7 +38,8 @@ bool write_new_file(const std::filesystem::path& path, const std::string& text,
     }
     const bool written = std::fwrite(text.data(), 1, text.size(), f) == text.size();
     const int saved_errno = errno;
-    const bool flushed = std::fflush(f) == 0;
+    // On the disk before the rename: a crash then leaves the old file or the whole new one.
+    const bool flushed = std::fflush(f) == 0 && ::fsync(::fileno(f)) == 0;
     const bool closed = std::fclose(f) == 0;
     if (!(written && flushed && closed)) {
         error = std::strerror(written ? errno : saved_errno);
@@ -46,13 +48,30 @@ bool write_new_file(const std::filesystem::path& path, const std::string& text,
     return true;
 }
 
+// The file a chain of symbolic links ends at (`path` itself when it is no link), so that saving
+// replaces that file and keeps the links (e.g. into a folder of dotfiles).
+std::filesystem::path link_target(std::filesystem::path path) {
+    for (int hops = 0; hops < 40; ++hops) {
+        std::error_code ec;
+        if (!std::filesystem::is_symlink(std::filesystem::symlink_status(path, ec))) return path;
+        const std::filesystem::path to = std::filesystem::read_symlink(path, ec);
+        if (ec)
+            throw std::runtime_error(fmt::format("cannot save to {}: cannot read the link ({})",
+                                                 path.string(), ec.message()));
+        path = to.is_absolute() ? to : path.parent_path() / to;
+    }
+    throw std::runtime_error(
+        fmt::format("cannot save to {}: too many links in a chain", path.string()));
+}
+
 }  // namespace
 
-void write_file_atomically(const std::filesystem::path& path, const std::string& text) {
+void write_file_atomically(const std::filesystem::path& given, const std::string& text) {
+    const std::filesystem::path path = link_target(given);
+    std::error_code ec;
     // A directory, a FIFO or a device where the file should be is the user's: never replace it.
-    std::error_code exists;
-    const std::filesystem::file_status target = std::filesystem::status(path, exists);
-    if (!exists && std::filesystem::exists(target) && !std::filesystem::is_regular_file(target))
+    const std::filesystem::file_status target = std::filesystem::status(path, ec);
+    if (!ec && std::filesystem::exists(target) && !std::filesystem::is_regular_file(target))
         throw std::runtime_error(
             fmt::format("cannot save to {}: it is there and is not a regular file (move it away "
                         "to save here)",
@@ -65,7 +84,6 @@ void write_file_atomically(const std::filesystem::path& path, const std::string&
         throw std::runtime_error(fmt::format("cannot save to {}: cannot write {} ({})",
                                              path.string(), tmp.string(), error));
     }
-    std::error_code ec;
     std::filesystem::rename(tmp, path, ec);
     if (ec) {
         std::error_code ignored;

@@ -350,6 +350,18 @@ TEST(SaveLoad, SaveReplacesAtomically) {
     EXPECT_EQ(slurp(file), second.to_json());
 }
 
+TEST(SaveLoad, SavingThroughALinkKeepsTheLink) {
+    const fs::path dir = fresh_dir();
+    fs::create_directories(dir / "dotfiles");
+    const fs::path real = dir / "dotfiles" / "game.json", link = dir / "game.json";
+    fs::create_symlink(real, link);
+    const Session s = in_progress();
+    s.save_file(link);
+    EXPECT_TRUE(fs::is_symlink(link));
+    EXPECT_EQ(slurp(real), s.to_json());
+    EXPECT_EQ(listing(dir / "dotfiles"), std::vector<fs::path>{"game.json"});
+}
+
 TEST(SaveLoad, AFifoIsNeitherReadNorReplaced) {
     const fs::path dir = fresh_dir();
     const fs::path fifo = dir / "game.json";
