@@ -10,6 +10,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -18,88 +20,107 @@
 #include "render/renderer.hpp"
 #include "render/scenes.hpp"
 
-int main(int argc, char** argv) {
+namespace {
+
+struct Options {
     int width = 1280, height = 720, frames = 300, samples = 4;
     bool cache_table = true;
-    std::string png, scene_name = "mid_game";
+    std::string png, scene = "mid_game";
+};
+
+// The options, or nothing after a message on stderr.
+std::optional<Options> parse(int argc, char** argv) {
+    Options o;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         const bool more = i + 1 < argc;
         if (a == "--size" && more) {
-            if (std::sscanf(argv[++i], "%dx%d", &width, &height) != 2 || width < 1 || height < 1) {
+            if (std::sscanf(argv[++i], "%dx%d", &o.width, &o.height) != 2 || o.width < 1 ||
+                o.height < 1) {
                 std::fprintf(stderr, "--size: expected WIDTHxHEIGHT, e.g. 1280x720\n");
-                return 2;
+                return std::nullopt;
             }
         } else if (a == "--frames" && more) {
-            frames = std::max(1, std::atoi(argv[++i]));
+            o.frames = std::max(1, std::atoi(argv[++i]));
         } else if (a == "--samples" && more) {
-            samples = std::max(1, std::atoi(argv[++i]));
+            o.samples = std::max(1, std::atoi(argv[++i]));
         } else if (a == "--no-table-cache") {
-            cache_table = false;
+            o.cache_table = false;
         } else if (a == "--scene" && more) {
-            scene_name = argv[++i];
+            o.scene = argv[++i];
         } else if (a == "--png" && more) {
-            png = argv[++i];
+            o.png = argv[++i];
         } else {
             std::fprintf(stderr,
                          "usage: coolaaber-render-bench [--size WxH] [--frames N] [--samples N] "
                          "[--scene NAME] [--no-table-cache] [--png FILE]\n");
-            return 2;
+            return std::nullopt;
         }
     }
+    return o;
+}
+
+// The scene by name at moment k of `distinct`; an unknown name throws std::invalid_argument.
+render::DemoScene scene_named(const std::string& name, float aspect, int k, int distinct) {
+    if (name == "mid_game") return render::mid_game_scene(aspect, 0.05 + 2.0 * k / distinct);
+    if (name == "racked") return render::racked_scene(aspect);
+    if (name == "mid_roll") return render::mid_roll_scene(aspect);
+    if (name == "cue_view") return render::cue_view_scene(aspect);
+    if (name == "ball_in_hand") return render::ball_in_hand_scene(aspect);
+    if (name == "aim_overhead") return render::aim_overhead_scene(aspect);
+    if (name == "cushion") return render::cushion_scene(aspect);
+    throw std::invalid_argument(
+        "--scene: expected mid_game, racked, mid_roll, cue_view, ball_in_hand, aim_overhead or "
+        "cushion");
+}
+
+// Draws the scenes in turn (after 5 frames of warm-up); the frame times (unit: ms), sorted.
+std::vector<double> frame_times(const Options& o, const std::vector<render::DemoScene>& scenes,
+                                render::OffscreenTarget& target) {
+    render::RenderSettings settings;
+    settings.cache_table = o.cache_table;
+    render::Renderer renderer(scenes.front().table, scenes.front().ball_radius, settings);
+    std::vector<double> ms;
+    for (int f = 0; f < o.frames + 5; ++f) {
+        const auto start = std::chrono::steady_clock::now();
+        target.bind();
+        renderer.draw(scenes[static_cast<std::size_t>(f) % scenes.size()].frame(), o.width,
+                      o.height);
+        target.resolve();
+        glFinish();
+        const auto end = std::chrono::steady_clock::now();
+        if (f >= 5) ms.push_back(std::chrono::duration<double, std::milli>(end - start).count());
+    }
+    std::sort(ms.begin(), ms.end());
+    return ms;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const std::optional<Options> o = parse(argc, argv);
+    if (!o) return 2;
     try {
         render::HeadlessContext context;
-        const float aspect = static_cast<float>(width) / static_cast<float>(height);
+        const float aspect = static_cast<float>(o->width) / static_cast<float>(o->height);
         // The balls' states over the first 2 s of the break, precomputed so only drawing is timed.
         std::vector<render::DemoScene> scenes;
         const int distinct = 30;
-        for (int k = 0; k < distinct; ++k) {
-            if (scene_name == "mid_game")
-                scenes.push_back(render::mid_game_scene(aspect, 0.05 + 2.0 * k / distinct));
-            else if (scene_name == "racked")
-                scenes.push_back(render::racked_scene(aspect));
-            else if (scene_name == "mid_roll")
-                scenes.push_back(render::mid_roll_scene(aspect));
-            else if (scene_name == "cue_view")
-                scenes.push_back(render::cue_view_scene(aspect));
-            else if (scene_name == "ball_in_hand")
-                scenes.push_back(render::ball_in_hand_scene(aspect));
-            else if (scene_name == "aim_overhead")
-                scenes.push_back(render::aim_overhead_scene(aspect));
-            else if (scene_name == "cushion")
-                scenes.push_back(render::cushion_scene(aspect));
-            else {
-                std::fprintf(stderr,
-                             "--scene: expected mid_game, racked, mid_roll, cue_view, "
-                             "ball_in_hand, aim_overhead or cushion\n");
-                return 2;
-            }
-        }
-        render::RenderSettings settings;
-        settings.cache_table = cache_table;
-        render::Renderer renderer(scenes.front().table, scenes.front().ball_radius, settings);
-        render::OffscreenTarget target(width, height, samples);
-        std::vector<double> ms;
-        for (int f = 0; f < frames + 5; ++f) {
-            const auto start = std::chrono::steady_clock::now();
-            target.bind();
-            renderer.draw(scenes[static_cast<std::size_t>(f % distinct)].frame(), width, height);
-            target.resolve();
-            glFinish();
-            const auto end = std::chrono::steady_clock::now();
-            if (f >= 5)
-                ms.push_back(std::chrono::duration<double, std::milli>(end - start).count());
-        }
-        if (!png.empty()) render::write_png(png, render::read_pixels(width, height));
-        std::sort(ms.begin(), ms.end());
+        for (int k = 0; k < distinct; ++k)
+            scenes.push_back(scene_named(o->scene, aspect, k, distinct));
+        render::OffscreenTarget target(o->width, o->height, o->samples);
+        const std::vector<double> ms = frame_times(*o, scenes, target);
+        if (!o->png.empty()) render::write_png(o->png, render::read_pixels(o->width, o->height));
         const double median = ms[ms.size() / 2];
         const double p95 = ms[std::min(ms.size() - 1, ms.size() * 95 / 100)];
         std::printf(
-            "{\"size\":\"%dx%d\",\"frames\":%d,\"samples\":%d,\"table_cache\":%s,\"renderer\":\"%"
-            "s\",\"median_ms\":%.3f,"
-            "\"p95_ms\":%.3f,\"fps\":%.1f}\n",
-            width, height, frames, target.samples(), cache_table ? "true" : "false",
+            "{\"size\":\"%dx%d\",\"frames\":%d,\"samples\":%d,\"table_cache\":%s,"
+            "\"renderer\":\"%s\",\"median_ms\":%.3f,\"p95_ms\":%.3f,\"fps\":%.1f}\n",
+            o->width, o->height, o->frames, target.samples(), o->cache_table ? "true" : "false",
             context.renderer_name().c_str(), median, p95, 1000.0 / median);
+    } catch (const std::invalid_argument& e) {
+        std::fprintf(stderr, "%s\n", e.what());
+        return 2;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "coolaaber-render-bench: %s\n", e.what());
         return 1;

@@ -16,6 +16,7 @@
 // can be rerun alone: coolaaber-soak --seed S --from k --shots 1.
 //
 //   coolaaber-soak [--shots N] [--seed S] [--from K] [--max-events M]
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -154,69 +155,84 @@ std::optional<Options> parse(int argc, char** argv) {
     return o;
 }
 
-}  // namespace
+// What a run found: violations by kind, the events, and the first failing shot.
+struct Tally {
+    std::array<std::uint64_t, kKinds> count{};
+    std::uint64_t total_events = 0, max_events_seen = 0, first_bad = 0, bad_shots = 0;
+    std::optional<Violation> first;
+    double seconds = 0.0;
 
-int main(int argc, char** argv) {
-    const std::optional<Options> opt = parse(argc, argv);
-    if (!opt) return 2;
+    void add(std::uint64_t k, const Shot& shot, std::optional<Violation> v) {
+        total_events += shot.events().size();
+        max_events_seen = std::max<std::uint64_t>(max_events_seen, shot.events().size());
+        if (!v) return;
+        ++count[v->kind];
+        if (bad_shots++ < 20)
+            std::fprintf(stderr, "shot %llu: %s: %s\n", static_cast<unsigned long long>(k),
+                         kKindNames[v->kind], v->detail.c_str());
+        if (!first) {
+            first = v;
+            first_bad = k;
+        }
+    }
+};
+
+// Shot k is the property tests' random shot k on the 7ft, 8ft or 9ft table in turn, drawn from
+// its own seed (so that it can be rerun alone).
+Tally run(const Options& o) {
     const Params p;
     const std::array<Table, 3> tables = {build_table(*table_preset("7ft")),
                                          build_table(*table_preset("8ft")),
                                          build_table(*table_preset("9ft"))};
     SimOptions sim;
-    sim.max_events = opt->max_events + 1;  // one more: a shot over the bound is seen, not cut
-    std::array<std::uint64_t, kKinds> count{};
-    std::uint64_t total_events = 0, max_events_seen = 0, first_bad = 0, bad_shots = 0;
-    std::optional<Violation> first;
+    sim.max_events = o.max_events + 1;  // one more: a shot over the bound is seen, not cut
+    Tally tally;
     const auto start = std::chrono::steady_clock::now();
-    for (std::uint64_t k = opt->from; k < opt->from + opt->shots; ++k) {
+    for (std::uint64_t k = o.from; k < o.from + o.shots; ++k) {
         const Table& t = tables[k % 3];
-        SplitMix64 rng(shot_seed(opt->seed, k));
+        SplitMix64 rng(shot_seed(o.seed, k));
         const testing::RandomShot rs = testing::random_shot(t, p, rng, static_cast<int>(k % 10));
         const Shot shot = simulate(t, p, rs.balls, &rs.stroke, sim);
-        total_events += shot.events().size();
-        if (shot.events().size() > max_events_seen) max_events_seen = shot.events().size();
-        if (std::optional<Violation> v = check_shot(t, p, shot, opt->max_events)) {
-            ++count[v->kind];
-            if (bad_shots++ < 20)
-                std::fprintf(stderr, "shot %llu: %s: %s\n", static_cast<unsigned long long>(k),
-                             kKindNames[v->kind], v->detail.c_str());
-            if (!first) {
-                first = v;
-                first_bad = k;
-            }
-        }
+        tally.add(k, shot, check_shot(t, p, shot, o.max_events));
     }
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    tally.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return tally;
+}
+
+// The run as one JSON line on standard output.
+void print_summary(const Options& o, const Tally& t) {
     std::uint64_t bad = 0;
     std::string kinds;
     for (int k = 0; k < kKinds; ++k) {
-        bad += count[static_cast<std::size_t>(k)];
+        bad += t.count[static_cast<std::size_t>(k)];
         kinds += std::string(k ? "," : "") + "\"" + kKindNames[static_cast<std::size_t>(k)] +
-                 "\":" + std::to_string(count[static_cast<std::size_t>(k)]);
+                 "\":" + std::to_string(t.count[static_cast<std::size_t>(k)]);
     }
     std::printf(
         "{\"shots\":%llu,\"seed\":%llu,\"from\":%llu,\"violations\":%llu,\"by_kind\":{%s},"
         "\"events\":%llu,\"max_events_per_shot\":%llu,\"seconds\":%.2f,"
         "\"shots_per_s\":%.0f}\n",
-        static_cast<unsigned long long>(opt->shots), static_cast<unsigned long long>(opt->seed),
-        static_cast<unsigned long long>(opt->from), static_cast<unsigned long long>(bad),
-        kinds.c_str(), static_cast<unsigned long long>(total_events),
-        static_cast<unsigned long long>(max_events_seen), seconds,
-        seconds > 0 ? static_cast<double>(opt->shots) / seconds : 0.0);
-    if (first) {
-        std::fprintf(stderr,
-                     "first violation: shot %llu (%s table): %s: %s\n"
-                     "reproduce: coolaaber-soak --seed %llu --from %llu --shots 1\n",
-                     static_cast<unsigned long long>(first_bad),
-                     first_bad % 3 == 0   ? "7ft"
-                     : first_bad % 3 == 1 ? "8ft"
-                                          : "9ft",
-                     kKindNames[first->kind], first->detail.c_str(),
-                     static_cast<unsigned long long>(opt->seed),
-                     static_cast<unsigned long long>(first_bad));
-        return 1;
-    }
-    return 0;
+        static_cast<unsigned long long>(o.shots), static_cast<unsigned long long>(o.seed),
+        static_cast<unsigned long long>(o.from), static_cast<unsigned long long>(bad),
+        kinds.c_str(), static_cast<unsigned long long>(t.total_events),
+        static_cast<unsigned long long>(t.max_events_seen), t.seconds,
+        t.seconds > 0 ? static_cast<double>(o.shots) / t.seconds : 0.0);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const std::optional<Options> opt = parse(argc, argv);
+    if (!opt) return 2;
+    const Tally t = run(*opt);
+    print_summary(*opt, t);
+    if (!t.first) return 0;
+    const char* table = t.first_bad % 3 == 0 ? "7ft" : t.first_bad % 3 == 1 ? "8ft" : "9ft";
+    std::fprintf(stderr,
+                 "first violation: shot %llu (%s table): %s: %s\n"
+                 "reproduce: coolaaber-soak --seed %llu --from %llu --shots 1\n",
+                 static_cast<unsigned long long>(t.first_bad), table, kKindNames[t.first->kind],
+                 t.first->detail.c_str(), static_cast<unsigned long long>(opt->seed),
+                 static_cast<unsigned long long>(t.first_bad));
+    return 1;
 }
