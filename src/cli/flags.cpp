@@ -21,7 +21,10 @@ std::int64_t read_integer_flag(std::string_view flag, const std::string& text) {
                                    "e.g. 100",
                                    text));
     if (ec == std::errc::result_out_of_range)
-        throw BadInput(std::string(flag), fmt::format("{} is out of range", text));
+        throw BadInput(std::string(flag),
+                       fmt::format("{} is too large: at most 9223372036854775807 (each verb "
+                                   "says its own range)",
+                                   text));
     return value;
 }
 
@@ -29,7 +32,13 @@ double read_number_flag(std::string_view flag, const std::string& text) {
     double value = 0.0;
     const char* end = text.data() + text.size();
     const auto [ptr, ec] = std::from_chars(text.data(), end, value, std::chars_format::general);
-    if (text.empty() || ec != std::errc() || ptr != end || !std::isfinite(value))
+    if (!text.empty() && ptr == end &&
+        (ec == std::errc::result_out_of_range || (ec == std::errc() && !std::isfinite(value))))
+        throw BadInput(std::string(flag),
+                       fmt::format("{} is not a finite number: write a decimal number "
+                                   "within ±1.8e308, e.g. 0.5",
+                                   text));
+    if (text.empty() || ec != std::errc() || ptr != end)
         throw BadInput(
             std::string(flag),
             fmt::format("\"{}\" is not a number: write a decimal number, e.g. 0.5", text));
