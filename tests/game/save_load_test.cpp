@@ -29,18 +29,7 @@ Session in_progress(bool keep_events = false, rules::Game game = rules::Game::ei
     c.keep_events = keep_events;
     Session s(c);
     RandomPlayer a(5), b(6);
-    for (int shots = 0; shots < played && s.phase() != Phase::game_over;) {
-        const Decision d = (s.to_act() == A ? a : b).decide(s);
-        if (d.choice) {
-            s.choose(*d.choice);
-            continue;
-        }
-        if (d.cue_pos) s.place_cue_ball(*d.cue_pos);
-        s.set_call(d.call);
-        if (d.push_out) s.set_push_out(true);
-        s.play(d.stroke);
-        ++shots;
-    }
+    play_shots(s, a, b, played);
     if (s.phase() == Phase::choose) s.choose(s.choice()->options.front());
     EXPECT_NE(s.phase(), Phase::game_over) << "pick another seed: the game is over";
     return s;
@@ -249,17 +238,7 @@ TEST(SaveLoad, CorruptDocumentsNameTheField) {
 Session finished(rules::Game game) {
     Session s(config_for(game, 21));
     RandomPlayer a(5), b(6);
-    for (int shots = 0; shots < 2000 && s.phase() != Phase::game_over; ++shots) {
-        const Decision d = (s.to_act() == A ? a : b).decide(s);
-        if (d.choice) {
-            s.choose(*d.choice);
-            continue;
-        }
-        if (d.cue_pos) s.place_cue_ball(*d.cue_pos);
-        s.set_call(d.call);
-        if (d.push_out) s.set_push_out(true);
-        s.play(d.stroke);
-    }
+    play_shots(s, a, b, 2000);
     EXPECT_EQ(s.phase(), Phase::game_over);
     return s;
 }

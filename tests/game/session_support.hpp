@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "game/random_player.hpp"
 #include "game/session.hpp"
 #include "physics/layout.hpp"
 #include "physics/table.hpp"
@@ -77,6 +78,23 @@ inline Config config_for(rules::Game game, std::uint64_t seed = 1) {
 
 /// A session whose table is `t` (loaded through from_json): the balls not on the table are
 /// listed as pocketed by A.
+// Plays with random players, deciding in the test, so a game can be paused anywhere.
+inline void play_shots(Session& s, RandomPlayer& a, RandomPlayer& b, int shots) {
+    for (int n = 0; n < shots && s.phase() != Phase::game_over;) {
+        RandomPlayer& p = s.to_act() == A ? a : b;
+        const Decision d = p.decide(s);
+        if (d.choice) {
+            s.choose(*d.choice);
+            continue;
+        }
+        if (d.cue_pos) s.place_cue_ball(*d.cue_pos);
+        s.set_call(d.call);
+        if (d.push_out) s.set_push_out(true);
+        s.play(d.stroke);
+        ++n;
+    }
+}
+
 inline Session session_with(const Config& config, const TableState& t) {
     json doc = json::parse(Session(config).to_json());
     doc["state"] = t.to_json();

@@ -513,23 +513,6 @@ TEST(Session, StrokesAreChecked) {
     EXPECT_TRUE(s.history().empty());
 }
 
-// Plays with random players, deciding in the test, so a game can be paused anywhere.
-void play_shots(Session& s, RandomPlayer& a, RandomPlayer& b, int shots) {
-    for (int n = 0; n < shots && s.phase() != Phase::game_over;) {
-        RandomPlayer& p = s.to_act() == A ? a : b;
-        const Decision d = p.decide(s);
-        if (d.choice) {
-            s.choose(*d.choice);
-            continue;
-        }
-        if (d.cue_pos) s.place_cue_ball(*d.cue_pos);
-        s.set_call(d.call);
-        if (d.push_out) s.set_push_out(true);
-        s.play(d.stroke);
-        ++n;
-    }
-}
-
 // Replays the recorded shots `from`.. of `record` on `s`.
 void replay(Session& s, const std::vector<ShotRecord>& record, std::size_t from) {
     if (s.phase() == Phase::choose) s.choose(*record.at(from - 1).choice);
