@@ -108,8 +108,9 @@ BallState settle(const Params& p, BallState s, double snap_slip) {
     const Vec2 u = cloth_slip(p, s.vel, s.spin);
     const double slip = norm(u);
     if (slip < std::max(snap_slip, kRollSlip)) {
-        // The slide's end state: v falls by μg·t along û while u falls by 7/2·μg·t.
-        if (slip >= kRollSlip) s.vel = s.vel - (2.0 / 7.0) * u;
+        // The slide's end state: v falls by μg·t along û while u falls by 7/2·μg·t. Taken for
+        // every slip, however small: setting the spin from v alone can add energy.
+        s.vel = s.vel - (2.0 / 7.0) * u;
         Vec2 w = (1.0 / R) * perp(s.vel);
         s.spin.x = w.x;
         s.spin.y = w.y;

@@ -1,10 +1,13 @@
 // Motion between events against the closed forms of docs/physics.md: sliding (friction along
 // the slip), rolling, spin decay, draw, curving slides, and Shot::state_at.
+#include "physics/internal/motion.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
+#include "physics/rack.hpp"
 #include "physics/scenes.hpp"
 #include "test_support.hpp"
 
@@ -211,6 +214,27 @@ TEST(Motion, CurvingSlideFollowsTheParabola) {
 
 // Shot::state_at is the closed form at any time, for a ball that slides (with a curve and
 // z-spin), rolls, stops, and keeps spinning.
+// Settling resolves a slip below the snap at once into its slide's end state (v − 2/7·u,
+// rolling), which loses (1/7)·m·|u|²: never a gain, however small the slip or slow the ball.
+TEST(Motion, SettlingATinySlipNeverAddsEnergy) {
+    SplitMix64 rng(45);
+    for (int k = 0; k < 100000; ++k) {
+        const double speed = std::pow(10.0, -4.0 + 4.7 * rng.uniform());
+        const double slip = std::pow(10.0, -13.0 + 8.6 * rng.uniform());  // up to 4e-5 m/s
+        const Vec2 v = speed * from_angle(360.0 * rng.uniform());
+        const Vec2 u = slip * from_angle(360.0 * rng.uniform());
+        // cloth_slip = v + R·perp(ω_xy): the rolling spin of v − u leaves the slip u.
+        const Vec3 w = rolling_spin(kP, v - u, 30.0 * (2 * rng.uniform() - 1));
+        BallState s = make_ball(1, {0.5, 0.5}, v, w);
+        s.motion = Motion::sliding;
+        const double before = kinetic(kP, s);
+        const BallState settled = motion::settle(kP, s, motion::kSnapSlip);
+        ASSERT_EQ(settled.motion, Motion::rolling);
+        ASSERT_LE(kinetic(kP, settled), before * (1 + 1e-14))
+            << "speed " << speed << " m/s, slip " << slip << " m/s";
+    }
+}
+
 TEST(Motion, StateAtMatchesTheClosedFormAtAnyTime) {
     const Table table = unbounded_table();
     const BallState b0 = make_ball(0, {0.25, -0.5}, {1.2, -0.7}, {-20.0, 35.0, 90.0});
