@@ -8,10 +8,13 @@
 //       tools/physics_fingerprint.cpp src/physics/*.cpp -o /tmp/fingerprint   (one line)
 //   /tmp/fingerprint 10000 12345 > after.txt   (shots per table, seed; events on stderr)
 //   cmp before.txt after.txt
-#include <bit>
+// A third argument `--positions` adds every final ball position, to measure how far apart two
+// builds' results lie where their hashes differ (native and WebAssembly, docs/physics.md).
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <string>
 
 #include "physics/scenes.hpp"
 #include "physics/simulate.hpp"
@@ -30,7 +33,11 @@ struct Fnv {
             h *= 1099511628211ULL;
         }
     }
-    void mix(double d) { mix(std::bit_cast<std::uint64_t>(d)); }
+    void mix(double d) {
+        std::uint64_t bits;
+        std::memcpy(&bits, &d, sizeof bits);  // std::bit_cast, which Emscripten's libc++ lacks
+        mix(bits);
+    }
     void mix(int v) { mix(static_cast<std::uint64_t>(static_cast<std::int64_t>(v))); }
 };
 
@@ -68,16 +75,25 @@ std::uint64_t fingerprint(const Shot& shot, long& events) {
 
 }  // namespace
 
+/// Every ball's final position, exactly (hexadecimal floating point), for measuring how far two
+/// builds' results lie apart where their hashes differ.
+void print_positions(const Shot& shot) {
+    for (const BallState& b : shot.final_states()) std::printf(" %a %a", b.pos.x, b.pos.y);
+}
+
 int main(int argc, char** argv) {
     const int shots = argc > 1 ? std::atoi(argv[1]) : 1000;
     const std::uint64_t seed = argc > 2 ? std::strtoull(argv[2], nullptr, 10) : 12345;
+    const bool positions = argc > 3 && std::string(argv[3]) == "--positions";
     const Params p;
     long events = 0;
     for (const std::string& name : standard_scene_names()) {
         const Scene sc = standard_scene(name, p);
         const Shot shot = simulate(build_table(sc.table), p, sc.balls, &sc.stroke);
-        std::printf("%s %016llx\n", name.c_str(),
+        std::printf("%s %016llx", name.c_str(),
                     static_cast<unsigned long long>(fingerprint(shot, events)));
+        if (positions) print_positions(shot);
+        std::printf("\n");
     }
     for (const char* preset : {"7ft", "8ft", "9ft"}) {
         const Table t = build_table(*table_preset(preset));
@@ -85,8 +101,10 @@ int main(int argc, char** argv) {
         for (int k = 0; k < shots; ++k) {
             const testing::RandomShot rs = testing::random_shot(t, p, rng, k);
             const Shot shot = simulate(t, p, rs.balls, &rs.stroke);
-            std::printf("%s %d %016llx\n", preset, k,
+            std::printf("%s %d %016llx", preset, k,
                         static_cast<unsigned long long>(fingerprint(shot, events)));
+            if (positions) print_positions(shot);
+            std::printf("\n");
         }
     }
     std::fprintf(stderr, "%ld events\n", events);

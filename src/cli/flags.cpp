@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <system_error>
 
@@ -28,20 +29,45 @@ std::int64_t read_integer_flag(std::string_view flag, const std::string& text) {
     return value;
 }
 
+namespace {
+
+std::size_t skip_digits(std::string_view t, std::size_t i) {
+    while (i < t.size() && t[i] >= '0' && t[i] <= '9') ++i;
+    return i;
+}
+
+/// [-]digits[.digits][(e|E)[±]digits], with a digit before or after the point: no spaces, '+',
+/// hexadecimal or words (what strtod would also take).
+bool is_decimal(std::string_view t) {
+    std::size_t i = t.starts_with('-') ? 1 : 0;
+    const std::size_t int_end = skip_digits(t, i);
+    std::size_t end = int_end;
+    if (end < t.size() && t[end] == '.') end = skip_digits(t, end + 1);
+    if (end - i < 1 + (end > int_end ? 1 : 0)) return false;  // no digit at all
+    if (end < t.size() && (t[end] == 'e' || t[end] == 'E')) {
+        std::size_t e = end + 1;
+        if (e < t.size() && (t[e] == '+' || t[e] == '-')) ++e;
+        end = skip_digits(t, e);
+        if (end == e) return false;
+    }
+    return end == t.size();
+}
+
+}  // namespace
+
 double read_number_flag(std::string_view flag, const std::string& text) {
-    double value = 0.0;
-    const char* end = text.data() + text.size();
-    const auto [ptr, ec] = std::from_chars(text.data(), end, value, std::chars_format::general);
-    if (!text.empty() && ptr == end &&
-        (ec == std::errc::result_out_of_range || (ec == std::errc() && !std::isfinite(value))))
+    if (!is_decimal(text))
+        throw BadInput(
+            std::string(flag),
+            fmt::format("\"{}\" is not a number: write a decimal number, e.g. 0.5", text));
+    // strtod, not from_chars: Emscripten's libc++ has no from_chars for doubles. The CLI
+    // never changes the C locale, so the point is '.'.
+    const double value = std::strtod(text.c_str(), nullptr);
+    if (!std::isfinite(value))
         throw BadInput(std::string(flag),
                        fmt::format("{} is not a finite number: write a decimal number "
                                    "within ±1.8e308, e.g. 0.5",
                                    text));
-    if (text.empty() || ec != std::errc() || ptr != end)
-        throw BadInput(
-            std::string(flag),
-            fmt::format("\"{}\" is not a number: write a decimal number, e.g. 0.5", text));
     return value;
 }
 

@@ -45,7 +45,7 @@ rules::Call RandomPlayer::call(const Session& s) {
             if (id != 8 && (!mine || rules::group_of(id) == mine)) candidates.push_back(id);
     }
     if (candidates.empty()) return rules::Call::nothing();
-    const int ball = candidates[rng_.below(candidates.size())];
+    const int ball = candidates[static_cast<std::size_t>(rng_.below(candidates.size()))];
     return rules::Call::ball_in(ball, static_cast<int>(rng_.below(6)));
 }
 
@@ -62,7 +62,7 @@ physics::Stroke RandomPlayer::stroke() {
 Decision RandomPlayer::decide(const Session& s) {
     Decision d;
     if (std::optional<rules::Choice> c = s.choice()) {
-        d.choice = c->options[rng_.below(c->options.size())];
+        d.choice = c->options[static_cast<std::size_t>(rng_.below(c->options.size()))];
         return d;
     }
     if (s.phase() == Phase::place_cue_ball) d.cue_pos = place(s);

@@ -2,6 +2,7 @@
 // proofs TP A.30 (ball speed and spin from an off-centre hit) and TP A.31 (squirt).
 #include "physics/cue_strike.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 

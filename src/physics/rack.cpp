@@ -27,7 +27,8 @@ namespace {
 
 /// Fisher–Yates with our own generator, so racks are the same on every platform.
 void shuffle(std::span<int> a, SplitMix64& rng) {
-    for (std::size_t i = a.size(); i > 1; --i) std::swap(a[i - 1], a[rng.below(i)]);
+    for (std::size_t i = a.size(); i > 1; --i)
+        std::swap(a[i - 1], a[static_cast<std::size_t>(rng.below(i))]);
 }
 
 /// Centres of a tight rack whose rows have `counts` balls, apex on the foot spot, rows going

@@ -39,9 +39,9 @@
 // exceptions, no FMA: the same input gives the same bits everywhere.
 #include "physics/internal/roots.hpp"
 
-#include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 
 #include "physics/internal/roots_convex_pieces.hpp"
@@ -161,14 +161,26 @@ struct End {
 /// spanning many binades (|b/a| > 2³², or an end at 0) is split at the geometric mean, by
 /// averaging the bit patterns of the ends (a 0 end counting as 2⁻⁵²·|other end|), so that a
 /// root anywhere in [1, 1e300] is reached in ~60 bisections, not ~1000.
+std::uint64_t bits_of(double x) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &x, sizeof bits);  // std::bit_cast, which Emscripten's libc++ lacks
+    return bits;
+}
+
+double from_bits(std::uint64_t bits) {
+    double x;
+    std::memcpy(&x, &bits, sizeof x);
+    return x;
+}
+
 double bisect(double a, double b) {
     if (a < 0.0 && b > 0.0) return 0.0;
     const double lo = std::fabs(a) < std::fabs(b) ? std::fabs(a) : std::fabs(b);
     const double hi = std::fabs(a) < std::fabs(b) ? std::fabs(b) : std::fabs(a);
     if (!(hi > 0x1p32 * lo)) return a + 0.5 * (b - a);
-    const auto low_bits = std::bit_cast<std::uint64_t>(lo > 0.0 ? lo : 0x1p-52 * hi);
-    const auto high_bits = std::bit_cast<std::uint64_t>(hi);
-    const double middle = std::bit_cast<double>(low_bits + (high_bits - low_bits) / 2);
+    const std::uint64_t low_bits = bits_of(lo > 0.0 ? lo : 0x1p-52 * hi);
+    const std::uint64_t high_bits = bits_of(hi);
+    const double middle = from_bits(low_bits + (high_bits - low_bits) / 2);
     return a < 0.0 || b < 0.0 ? -middle : middle;
 }
 
