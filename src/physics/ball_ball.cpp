@@ -9,12 +9,13 @@
 #include "physics/energy.hpp"
 #include "physics/internal/collide.hpp"
 #include "physics/internal/motion.hpp"
+#include "physics/portable_math.hpp"
 
 namespace physics::collide {
 
 double ball_ball_friction(const Params& p, double slip_speed) {
     if (p.mu_ball) return *p.mu_ball;
-    return 0.00995 + 0.108 * std::exp(-1.088 * slip_speed);
+    return 0.00995 + 0.108 * portable::exp(-1.088 * slip_speed);
 }
 
 namespace {

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "physics/portable_math.hpp"
+
 namespace physics {
 
 namespace {
@@ -29,18 +31,19 @@ StrikeResult strike(const Params& p, const Stroke& st) {
     // mass at the tip's contact point, 1/m_eff = (1 + 5/2·(a² + b²)) / m (TP A.30).
     const double offset2 = a * a + b * b;
     const double impulse = (1.0 + p.cue_tip_e) * cue_speed / (1.0 / M + (1.0 + 2.5 * offset2) / m);
-    const Vec3 d{std::cos(phi) * std::cos(eps), std::sin(phi) * std::cos(eps), -std::sin(eps)};
-    const Vec3 right{std::sin(phi), -std::cos(phi), 0.0};
+    const Vec3 d{portable::cos(phi) * portable::cos(eps), portable::sin(phi) * portable::cos(eps),
+                 -portable::sin(eps)};
+    const Vec3 right{portable::sin(phi), -portable::cos(phi), 0.0};
     const Vec3 up = cross(right, d);
     const Vec3 contact = R * (a * right + b * up - std::sqrt(std::max(0.0, 1.0 - offset2)) * d);
     out.spin = (impulse / inertia) * cross(contact, d);
     // The cloth absorbs the downward part of the impulse (no jumps in this engine).
-    const double speed = impulse * std::cos(eps) / m;
+    const double speed = impulse * portable::cos(eps) / m;
     // Squirt (TP A.31): the ball leaves off the stroke line, away from the side of the tip.
-    const double squirt = std::atan(2.5 * a * std::sqrt(1.0 - a * a) /
-                                    (1.0 + m / p.cue_endmass + 2.5 * (1.0 - a * a)));
+    const double squirt = portable::atan(2.5 * a * std::sqrt(1.0 - a * a) /
+                                         (1.0 + m / p.cue_endmass + 2.5 * (1.0 - a * a)));
     out.squirt_deg = squirt / kDeg;
-    out.vel = {speed * std::cos(phi + squirt), speed * std::sin(phi + squirt)};
+    out.vel = {speed * portable::cos(phi + squirt), speed * portable::sin(phi + squirt)};
     return out;
 }
 

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "physics/cue_strike.hpp"
+#include "physics/portable_math.hpp"
 #include "physics/rack.hpp"
 
 namespace physics {
@@ -19,7 +20,7 @@ BallState ball(int id, double x, double y) {
 }
 
 double heading_deg(Vec2 from, Vec2 to) {
-    return std::atan2(to.y - from.y, to.x - from.x) * 180.0 / std::numbers::pi;
+    return portable::atan2(to.y - from.y, to.x - from.x) * 180.0 / std::numbers::pi;
 }
 
 }  // namespace
@@ -62,7 +63,7 @@ Scene standard_scene(std::string_view name, const Params& params) {
         // 0.3 m, at the heading (the middle of a 2.75° window) that makes the bank.
         const double h = -97.25 * std::numbers::pi / 180.0;
         const Vec2 object{L / 2 + 0.2, W / 2 - 0.2};
-        const Vec2 cue = object - 0.3 * Vec2{std::cos(h), std::sin(h)};
+        const Vec2 cue = object - 0.3 * Vec2{portable::cos(h), portable::sin(h)};
         s.balls = {ball(0, cue.x, cue.y), ball(3, object.x, object.y)};
         s.stroke.speed = cue_speed_for_ball_speed(params, 2.5);
         s.stroke.heading_deg = -97.25;

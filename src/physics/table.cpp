@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "physics/portable_math.hpp"
+
 namespace physics {
 
 namespace {
@@ -33,10 +35,10 @@ struct NoseTip {
 Vec2 add_jaw(Table& t, const NoseTip& n, double facing_deg, int pocket) {
     const double alpha = facing_deg * std::numbers::pi / 180.0;
     // The facing runs into the cushion at angle alpha to the rail face.
-    Vec2 f = std::cos(alpha) * n.along_rail - std::sin(alpha) * n.normal;
+    Vec2 f = portable::cos(alpha) * n.along_rail - portable::sin(alpha) * n.normal;
     const double r = t.spec.jaw_nose_radius;
     const double half = alpha / 2.0;
-    const double tangent = r / std::tan(half);
+    const double tangent = r / portable::tan(half);
     Vec2 rail_end = n.tip + tangent * n.along_rail;
     Vec2 facing_start = n.tip + tangent * f;
     Vec2 facing_end = n.tip + t.spec.jaw_depth * f;
@@ -47,7 +49,7 @@ Vec2 add_jaw(Table& t, const NoseTip& n, double facing_deg, int pocket) {
         t.lines.push_back(make_line(facing_start, facing_end, m, -1, pocket));
     if (r > 0) {
         Vec2 bisector = unit(n.along_rail + f);
-        t.noses.push_back({n.tip + (r / std::sin(half)) * bisector, r, pocket});
+        t.noses.push_back({n.tip + (r / portable::sin(half)) * bisector, r, pocket});
     }
     return rail_end;
 }

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "physics/layout.hpp"
+#include "physics/portable_math.hpp"
 #include "physics/rack.hpp"
 #include "physics/stroke.hpp"
 #include "physics/table.hpp"
@@ -30,7 +31,7 @@ inline RandomShot random_shot(const Table& t, const Params& p, SplitMix64& rng, 
                           R + rng.uniform() * (t.width() - 2 * R)};
         const Vec2 aim = t.foot_spot() - s.balls[0].pos;
         s.stroke.heading_deg =
-            std::atan2(aim.y, aim.x) * 180.0 / std::numbers::pi + (rng.uniform() - 0.5) * 10.0;
+            portable::atan2(aim.y, aim.x) * 180.0 / std::numbers::pi + (rng.uniform() - 0.5) * 10.0;
         s.stroke.speed = 3.0 + 6.0 * rng.uniform();  // cue speed; ball speed up to ~12 m/s
     } else {
         const int n = 1 + static_cast<int>(rng.below(16));
