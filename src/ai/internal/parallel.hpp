@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <exception>
 #include <mutex>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -35,7 +36,12 @@ void parallel_for(std::size_t n, int workers, const F& f) {
     };
     std::vector<std::thread> threads;
     threads.reserve(extra);
-    for (std::size_t t = 0; t < extra; ++t) threads.emplace_back(work);
+    try {
+        for (std::size_t t = 0; t < extra; ++t) threads.emplace_back(work);
+    } catch (const std::system_error&) {
+        // No more threads here (WebAssembly without pthreads): the caller does the rest, and
+        // the result is the same.
+    }
     work();
     for (std::thread& t : threads) t.join();
     if (error) std::rethrow_exception(error);
