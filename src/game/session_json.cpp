@@ -24,46 +24,12 @@ constexpr std::int64_t max_count = 1'000'000'000;
 
 // ---- Writing
 
-ordered_json table_json(const physics::TableSpec& t) {
-    return {{"length", t.length},
-            {"width", t.width},
-            {"corner_mouth", t.corner_mouth},
-            {"side_mouth", t.side_mouth},
-            {"corner_facing_deg", t.corner_facing_deg},
-            {"side_facing_deg", t.side_facing_deg},
-            {"jaw_nose_radius", t.jaw_nose_radius},
-            {"cushion_height", t.cushion_height},
-            {"corner_shelf", t.corner_shelf},
-            {"side_shelf", t.side_shelf},
-            {"jaw_depth", t.jaw_depth},
-            {"pockets", t.pockets}};
-}
-
-ordered_json params_json(const physics::Params& p) {
-    ordered_json j;
-    j["ball_radius"] = p.ball_radius;
-    j["ball_mass"] = p.ball_mass;
-    j["gravity"] = p.gravity;
-    j["mu_slide"] = p.mu_slide;
-    j["mu_roll"] = p.mu_roll;
-    j["spin_decel"] = p.spin_decel;
-    j["e_ball"] = p.e_ball;
-    j["mu_ball"] = p.mu_ball ? ordered_json(*p.mu_ball) : ordered_json(nullptr);
-    j["e_cushion"] = p.e_cushion;
-    j["mu_cushion"] = p.mu_cushion;
-    j["cue_mass"] = p.cue_mass;
-    j["cue_tip_e"] = p.cue_tip_e;
-    j["cue_endmass"] = p.cue_endmass;
-    j["miscue_limit"] = p.miscue_limit;
-    return j;
-}
-
 ordered_json config_json(const Config& c) {
     ordered_json j;
     j["game"] = name(c.game);
     j["options"] = to_json(c.options);
-    j["table"] = table_json(c.table);
-    j["params"] = params_json(c.params);
+    j["table"] = to_json(c.table);
+    j["params"] = to_json(c.params);
     j["players"] = {{"A", c.names[0]}, {"B", c.names[1]}};
     j["seed"] = c.seed;
     j["first_breaker"] = name(c.first_breaker);

@@ -227,6 +227,40 @@ ordered_json to_json(const rules::Call& c) {
     return {{"ball", c.ball}, {"pocket", physics::pocket_name(c.pocket)}};
 }
 
+ordered_json to_json(const physics::TableSpec& t) {
+    return {{"length", t.length},
+            {"width", t.width},
+            {"corner_mouth", t.corner_mouth},
+            {"side_mouth", t.side_mouth},
+            {"corner_facing_deg", t.corner_facing_deg},
+            {"side_facing_deg", t.side_facing_deg},
+            {"jaw_nose_radius", t.jaw_nose_radius},
+            {"cushion_height", t.cushion_height},
+            {"corner_shelf", t.corner_shelf},
+            {"side_shelf", t.side_shelf},
+            {"jaw_depth", t.jaw_depth},
+            {"pockets", t.pockets}};
+}
+
+ordered_json to_json(const physics::Params& p) {
+    ordered_json j;
+    j["ball_radius"] = p.ball_radius;
+    j["ball_mass"] = p.ball_mass;
+    j["gravity"] = p.gravity;
+    j["mu_slide"] = p.mu_slide;
+    j["mu_roll"] = p.mu_roll;
+    j["spin_decel"] = p.spin_decel;
+    j["e_ball"] = p.e_ball;
+    j["mu_ball"] = p.mu_ball ? ordered_json(*p.mu_ball) : ordered_json(nullptr);
+    j["e_cushion"] = p.e_cushion;
+    j["mu_cushion"] = p.mu_cushion;
+    j["cue_mass"] = p.cue_mass;
+    j["cue_tip_e"] = p.cue_tip_e;
+    j["cue_endmass"] = p.cue_endmass;
+    j["miscue_limit"] = p.miscue_limit;
+    return j;
+}
+
 ordered_json to_json(const rules::GameState& s) {
     ordered_json j;
     j["shooter"] = name(s.shooter);

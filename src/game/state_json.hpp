@@ -23,6 +23,10 @@ nlohmann::ordered_json to_json(physics::Vec3 v);
 /// null, "safety" or {"ball": 5, "pocket": "N"}.
 nlohmann::ordered_json to_json(const rules::Call& c);
 /// A state with every field (the `judge` state schema).
+/// Every dimension of a table (the inverse of read_table with Fields::all).
+nlohmann::ordered_json to_json(const physics::TableSpec& t);
+/// Every physical parameter (the inverse of read_params with Fields::all).
+nlohmann::ordered_json to_json(const physics::Params& p);
 nlohmann::ordered_json to_json(const rules::GameState& s);
 /// Every house-rule switch.
 nlohmann::ordered_json to_json(const rules::Options& o);
