@@ -20,6 +20,7 @@
 
 #include "app/camera_rig.hpp"
 #include "app/controller.hpp"
+#include "app/display.hpp"
 #include "app/game_setup.hpp"
 #include "app/imgui_setup.hpp"
 #include "app/input.hpp"
@@ -120,6 +121,7 @@ struct Table {
             s.names = a.new_game->names;
             s.players = a.new_game->players;
             s.house_rules = a.new_game->house_rules;
+            s.aim_guide = a.new_game->aim_guide;
             ControllerOptions opts = setup.controller;
             opts.players = s.players;
             opts.seed = fresh_seed();
@@ -193,7 +195,7 @@ void on_key(Table& t, SDL_Window* window, SDL_Keycode key, bool shift) {
             t.controller.hint();
             break;
         case SDLK_g:
-            t.setup.settings.aim_guide = !t.setup.settings.aim_guide;
+            t.setup.settings.aim_guide = next_aim_guide(t.setup.settings.aim_guide);
             break;
         case SDLK_o:
             t.rig.set_mode(
@@ -232,19 +234,8 @@ std::optional<GameSetup> set_up_or_report(const AppOptions& options) {
 int run_window(const AppOptions& options) {
     std::optional<GameSetup> setup = set_up_or_report(options);
     if (!setup) return 2;
-    const auto set = [](const char* v) { return std::getenv(v) && *std::getenv(v); };
-    if (!set("DISPLAY") && !set("WAYLAND_DISPLAY") && !set("SDL_VIDEODRIVER")) {
-        std::fprintf(
-            stderr,
-            "coolaaber: no display (DISPLAY and WAYLAND_DISPLAY are not set): run it in a desktop "
-            "session, under a virtual display (xvfb-run -a ./play), or render a picture with "
-            "--screenshot FILE\n");
-        return 1;
-    }
-    if (SDL_Init(SDL_INIT_VIDEO | SDL_INIT_TIMER) != 0) {
-        std::fprintf(stderr,
-                     "coolaaber: cannot open a window: %s (is a display available? try xvfb-run)\n",
-                     SDL_GetError());
+    if (const std::optional<std::string> why = open_video()) {
+        std::fprintf(stderr, "coolaaber: %s\n", why->c_str());
         return 1;
     }
     SDL_GL_SetAttribute(SDL_GL_CONTEXT_MAJOR_VERSION, 3);
@@ -258,7 +249,7 @@ int run_window(const AppOptions& options) {
         SDL_CreateWindow("Coolaaber", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
                          s0.window_width, s0.window_height, flags);
     if (!window) {
-        std::fprintf(stderr, "coolaaber: cannot create the window: %s\n", SDL_GetError());
+        std::fprintf(stderr, "coolaaber: cannot open a window: %s\n", SDL_GetError());
         SDL_Quit();
         return 1;
     }
@@ -349,7 +340,8 @@ int run_window(const AppOptions& options) {
                         break;
                     case SDL_KEYDOWN:
                         if (!ImGui::GetIO().WantTextInput)
-                            on_key(t, window, e.key.keysym.sym, key_shift());
+                            on_key(t, window, e.key.keysym.sym,
+                                   (e.key.keysym.mod & KMOD_SHIFT) != 0);
                         break;
                     case SDL_WINDOWEVENT:
                         if (e.window.event == SDL_WINDOWEVENT_SIZE_CHANGED &&
@@ -422,9 +414,11 @@ int run_window(const AppOptions& options) {
             SDL_GL_SwapWindow(window);
             ++frames;
             if (status)
-                status->write(status_json(t.controller, t.setup.settings, t.rig.mode(),
-                                          {t.panel.widgets, frames, scene.cue.has_value(),
-                                           scene.show_aim, scene.ball_in_hand.has_value()}));
+                status->write(status_json(
+                    t.controller, t.setup.settings, t.rig.mode(),
+                    {t.panel.widgets, frames, scene.cue.has_value(), scene.show_aim,
+                     scene.ball_in_hand.has_value(), static_cast<int>(scene.aim.marks.size()),
+                     scene.show_aim && scene.aim.illegal}));
         }
         t.save_and_close();
         ImGui_ImplOpenGL3_Shutdown();

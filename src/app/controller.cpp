@@ -10,6 +10,7 @@
 #include "app/seats.hpp"
 #include "game/stroke_noise.hpp"
 #include "rules/eight_ball.hpp"
+#include "rules/judge.hpp"
 
 namespace app {
 
@@ -30,6 +31,13 @@ std::vector<int> legal_targets(const game::Session& s) {
     if (st.shot == rules::Shot::break_shot) return {st.on_table.begin(), st.on_table.end()};
     const std::set<int> legal = rules::eight_ball_legal_first(st);
     return {legal.begin(), legal.end()};
+}
+
+// With ball in hand in the kitchen, a ball behind the head string is no target: the cue ball
+// must cross the head string before it touches a ball (rules::Foul::bad_play_from_kitchen).
+bool behind_head_string(const game::Session& s, physics::Vec2 p) {
+    return s.ball_in_hand() == rules::BallInHand::kitchen &&
+           p.x < s.ruleset().table.head_string_x();
 }
 
 bool calls_count(const game::Session& s) {
@@ -109,7 +117,7 @@ rules::Call Controller::call() const {
     if (!calls_count(session_)) return rules::Call::nothing();
     if (computer_decision_) return computer_decision_->call;
     if (manual_call_) return *manual_call_;
-    if (preview_ && preview_->first_ball && preview_->pocket) {
+    if (preview_ && preview_->first_ball && preview_->pocket && aim_foul_.empty()) {
         const std::vector<int> legal = legal_targets(session_);
         if (std::find(legal.begin(), legal.end(), *preview_->first_ball) != legal.end())
             return rules::Call::ball_in(*preview_->first_ball, *preview_->pocket);
@@ -174,7 +182,8 @@ void Controller::aim_at_target() {
     double best_d = 1e9;
     for (int id : legal_targets(session_)) {
         const auto it = session_.state().positions.find(id);
-        if (it == session_.state().positions.end()) continue;
+        if (it == session_.state().positions.end() || behind_head_string(session_, it->second))
+            continue;
         const double d = physics::norm(it->second - cue->second);
         if (d < best_d) {
             best_d = d;
@@ -187,12 +196,21 @@ void Controller::aim_at_target() {
 }
 
 void Controller::refresh_preview() {
+    aim_foul_.clear();
     if (session_.phase() != game::Phase::shoot) {
         preview_.reset();
         return;
     }
     const std::vector<physics::BallState> balls = session_.balls();
     preview_ = preview_aim(session_.table(), session_.config().params, balls, stroke_of(aim_));
+    // The rules' own verdict on the shot as aimed; only what the player can see coming is
+    // said (where the cue ball meets its first ball), not what the exact simulation foresees.
+    const rules::Verdict v = rules::judge(session_.ruleset(), session_.state(), preview_->events);
+    if (v.has(rules::Foul::bad_play_from_kitchen) && preview_->first_ball)
+        aim_foul_ = fmt::format(
+            "Foul as aimed: the {} lies in the kitchen. From the kitchen the cue ball must "
+            "cross the head string before it touches a ball.",
+            *preview_->first_ball);
 }
 
 // ---- The stroke and its playback

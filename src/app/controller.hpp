@@ -91,6 +91,9 @@ class Controller {
     /// The information bar (whose turn, his group, who won: plain_words' info_lines). While a
     /// shot plays it stays as it was at the strike, so that the outcome shows when the balls stop.
     std::vector<std::string> info() const;
+    /// Why the stroke as aimed would be a foul, in a player's words (the guide is drawn red and
+    /// nothing is proposed as the call), else empty.
+    const std::string& aim_foul() const { return aim_foul_; }
     /// Why the last action was refused (shown in the panel), empty when it was not.
     const std::string& refusal() const { return refusal_; }
     /// Increments when a new shot starts playing (the app starts its sound then).
@@ -166,6 +169,7 @@ class Controller {
     std::string last_words_;
     std::vector<std::string> info_at_strike_;  ///< info() while the last shot plays
     std::string refusal_;
+    std::string aim_foul_;
     int shot_serial_ = 0;
 };
 

@@ -67,9 +67,28 @@ std::string seat_words(const std::string& kind) {
     return "Computer level " + kind.substr(3);
 }
 
+// "Aim guide: [level]"; returns the level picked, when one was.
+std::optional<AimGuide> aim_guide_combo(PanelState& st, AimGuide now) {
+    std::optional<AimGuide> picked;
+    ImGui::Text("Aim guide");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(-1.0f);
+    const bool open = ImGui::BeginCombo("##aim_guide", aim_guide_words(now));
+    remember(st, "Aim guide level");
+    if (open) {
+        for (AimGuide g : {AimGuide::off, AimGuide::ghost, AimGuide::lines, AimGuide::practice}) {
+            if (ImGui::Selectable(aim_guide_words(g), g == now)) picked = g;
+            remember(st, aim_guide_words(g));
+        }
+        ImGui::EndCombo();
+    }
+    return picked;
+}
+
 // The New Game dialog opens with the current settings as its draft.
 void open_new_game(PanelState& st, const Settings& settings) {
-    st.draft = NewGame{settings.game, settings.names, settings.players, settings.house_rules};
+    st.draft = NewGame{settings.game, settings.names, settings.players, settings.house_rules,
+                       settings.aim_guide};
     st.new_game_open = true;
 }
 
@@ -129,6 +148,7 @@ void new_game_dialog(PanelState& st, PanelActions& out) {
     std::vector<std::string> kinds{"human", "random"};
     for (int level = 1; level <= 5; ++level) kinds.push_back(fmt::format("ai:{}", level));
     for (std::size_t seat = 0; seat < 2; ++seat) seat_row(d, seat, kinds);
+    if (auto g = aim_guide_combo(st, d.aim_guide)) d.aim_guide = *g;
     if (d.game == rules::Game::eight_ball && ImGui::CollapsingHeader("House rules (8-ball)"))
         house_rules_editor(d.house_rules);
     ImGui::Separator();
@@ -193,6 +213,7 @@ void information_bar(const Controller& c, PanelState& st, PanelActions& out) {
     }
     if (c.computer_thinking()) ImGui::TextDisabled("(thinking...)");
     if (!c.last_shot_words().empty()) ImGui::TextDisabled("%s", c.last_shot_words().c_str());
+    if (!c.aim_foul().empty()) ImGui::TextColored(warning, "%s", c.aim_foul().c_str());
     if (!c.refusal().empty()) ImGui::TextColored(warning, "%s", c.refusal().c_str());
     ImGui::PopTextWrapPos();
     if (std::optional<rules::Choice> choice = c.session().choice(); choice && c.human_to_act())
@@ -235,8 +256,7 @@ void stroke_controls(const Controller& c, PanelActions& out) {
 // Aim guide, Strike, Hint, Skip or Replay, New Game and the controls' help.
 void play_buttons(const Controller& c, const Settings& settings, PanelState& st,
                   PanelActions& out) {
-    bool guide = settings.aim_guide;
-    if (ImGui::Checkbox("Aim guide", &guide)) out.aim_guide = guide;
+    if (auto g = aim_guide_combo(st, settings.aim_guide)) out.aim_guide = g;
     if (c.human_to_act() && c.session().phase() == game::Phase::shoot) {
         if (full_button(st, "Strike")) out.strike = true;
         if (full_button(st, "Hint")) out.hint = true;

@@ -21,12 +21,13 @@ struct NewGame {
     std::array<std::string, 2> names{"Player 1", "Player 2"};
     std::array<std::string, 2> players{"human", "human"};
     rules::Options house_rules;
+    AimGuide aim_guide = AimGuide::lines;
 };
 
 struct PanelActions {
     std::optional<double> power;
     std::optional<bool> sound;
-    std::optional<bool> aim_guide;
+    std::optional<AimGuide> aim_guide;
     bool change_view = false;
     bool restart = false;  ///< confirmed
     bool exit = false;
