@@ -389,12 +389,11 @@ void Controller::set_elevation(double deg) {
 
 bool Controller::move_cue_ball(physics::Vec2 pos) {
     if (!human_to_act() || session_.ball_in_hand() == rules::BallInHand::none) return false;
-    try {
-        session_.place_cue_ball(pos);
-    } catch (const game::Refused& e) {
-        refusal_ = e.what();
+    if (std::string why = placement_words(session_, pos); !why.empty()) {
+        refusal_ = std::move(why);
         return false;
     }
+    session_.place_cue_ball(pos);
     refusal_.clear();
     refresh_preview();
     return true;
@@ -409,7 +408,7 @@ void Controller::click_table(physics::Vec2 pos) {
         const physics::Vec2 p = session_.state().positions.at(id);
         if (physics::norm(p - pos) > 1.3 * R) continue;
         if (std::find(legal.begin(), legal.end(), id) == legal.end()) {
-            refusal_ = fmt::format("the {} is not a ball you may call now", id);
+            refusal_ = fmt::format("You may not call the {} now.", id);
             return;
         }
         const int pocket = now.is_ball()                  ? now.pocket
@@ -425,7 +424,7 @@ void Controller::click_table(physics::Vec2 pos) {
                                         : preview_    ? preview_->first_ball
                                                       : std::nullopt;
         if (!ball || std::find(legal.begin(), legal.end(), *ball) == legal.end()) {
-            refusal_ = "click the ball to call first, then the pocket";
+            refusal_ = "Click the ball to call first, then the pocket.";
             return;
         }
         manual_call_ = rules::Call::ball_in(*ball, p.id);
