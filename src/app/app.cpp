@@ -26,6 +26,7 @@
 #include "app/input.hpp"
 #include "app/painter.hpp"
 #include "app/panel.hpp"
+#include "app/panel_layout.hpp"
 #include "app/picking.hpp"
 #include "app/scene_frame.hpp"
 #include "app/seats.hpp"
@@ -277,6 +278,9 @@ int run_window(const AppOptions& options) {
         sound.set_muted(!t.setup.settings.sound);
         Painter painter(t.controller.session().table(),
                         t.controller.session().config().params.ball_radius);
+        float dpi = 0.0f;
+        if (SDL_GetDisplayDPI(0, nullptr, &dpi, nullptr) != 0) dpi = 0.0f;
+        const float ui_scale = dpi_scale(std::getenv("COOLAABER_UI_SCALE"), dpi);
         std::optional<StatusFile> status;
         if (options.status_file) status.emplace(*options.status_file);
 
@@ -382,7 +386,9 @@ int run_window(const AppOptions& options) {
             // ---- Draw
             int w = 0, h = 0;
             SDL_GL_GetDrawableSize(window, &w, &h);
-            painter.resize(w, h);
+            const PanelLayout layout = panel_layout(w, h, ui_scale);
+            painter.resize(w, h, static_cast<int>(layout.width));
+            set_ui_scale(layout.scale);
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplSDL2_NewFrame();
             // ImGui 1.86's SDL backend reads the global mouse state, stale under Xvfb/XTEST:
@@ -394,8 +400,9 @@ int run_window(const AppOptions& options) {
                 mouse_pressed[i] = false;
             }
             ImGui::NewFrame();
-            const PanelActions actions = draw_panel(t.controller, t.setup.settings, t.panel,
-                                                    static_cast<float>(w), static_cast<float>(h));
+            const PanelActions actions =
+                draw_panel(t.controller, t.setup.settings, t.panel, static_cast<float>(w),
+                           static_cast<float>(h), layout.width);
             ImGui::Render();
             t.apply(actions);
             if (!mouse_down[0] && !mouse_down[1] && !mouse_down[2])
@@ -414,11 +421,16 @@ int run_window(const AppOptions& options) {
             SDL_GL_SwapWindow(window);
             ++frames;
             if (status)
-                status->write(status_json(
-                    t.controller, t.setup.settings, t.rig.mode(),
-                    {t.panel.widgets, frames, scene.cue.has_value(), scene.show_aim,
-                     scene.ball_in_hand.has_value(), static_cast<int>(scene.aim.marks.size()),
-                     scene.show_aim && scene.aim.illegal}));
+                status->write(status_json(t.controller, t.setup.settings, t.rig.mode(),
+                                          {t.panel.widgets,
+                                           frames,
+                                           scene.cue.has_value(),
+                                           scene.show_aim,
+                                           scene.ball_in_hand.has_value(),
+                                           static_cast<int>(scene.aim.marks.size()),
+                                           scene.show_aim && scene.aim.illegal,
+                                           {w, h},
+                                           static_cast<int>(layout.width)}));
         }
         t.save_and_close();
         ImGui_ImplOpenGL3_Shutdown();
@@ -442,7 +454,10 @@ int run_screenshot(const AppOptions& options) {
         ImGui_ImplOpenGL3_Init("#version 330 core");
         Painter painter(t.controller.session().table(),
                         t.controller.session().config().params.ball_radius);
-        painter.resize(w, h);
+        const PanelLayout layout =
+            panel_layout(w, h, dpi_scale(std::getenv("COOLAABER_UI_SCALE"), 0.0f));
+        painter.resize(w, h, static_cast<int>(layout.width));
+        set_ui_scale(layout.scale);
         ImGuiIO& io = ImGui::GetIO();
         io.DisplaySize = ImVec2(static_cast<float>(w), static_cast<float>(h));
         io.DeltaTime = 1.0f / 60.0f;
@@ -451,7 +466,7 @@ int run_screenshot(const AppOptions& options) {
             ImGui_ImplOpenGL3_NewFrame();
             ImGui::NewFrame();
             (void)draw_panel(t.controller, t.setup.settings, t.panel, static_cast<float>(w),
-                             static_cast<float>(h));
+                             static_cast<float>(h), layout.width);
             ImGui::Render();
         }
         const float aspect =

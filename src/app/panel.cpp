@@ -27,13 +27,29 @@ bool full_button(PanelState& st, const char* label) {
     return pressed;
 }
 
+// Two buttons side by side, each half the row.
+std::pair<bool, bool> button_pair(PanelState& st, const char* a, const char* b) {
+    const float w = (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x) / 2;
+    const bool pa = ImGui::Button(a, ImVec2(w, 0.0f));
+    remember(st, a);
+    ImGui::SameLine();
+    const bool pb = ImGui::Button(b, ImVec2(w, 0.0f));
+    remember(st, b);
+    return {pa, pb};
+}
+
+// A length of the panel at scale 1, scaled with the text (panel_layout.hpp).
+float px(float v) {
+    return v * ImGui::GetFontSize() / 15.0f;
+}
+
 // The cue ball seen from the shooter, with a dot where the tip will hit; click or drag on it
 // to move the dot. Returns the new (side, top) when changed.
 std::optional<std::pair<double, double>> spin_picker(double side, double top, bool enabled) {
-    const float size = 96.0f;
+    const float size = px(96.0f);
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const ImVec2 centre{origin.x + size / 2, origin.y + size / 2};
-    const float r = size / 2 - 4.0f;
+    const float r = size / 2 - px(4.0f);
     ImGui::InvisibleButton("##spin", ImVec2(size, size));
     ImDrawList* dl = ImGui::GetWindowDrawList();
     dl->AddCircleFilled(centre, r, IM_COL32(238, 236, 226, 255), 48);
@@ -43,7 +59,7 @@ std::optional<std::pair<double, double>> spin_picker(double side, double top, bo
     dl->AddLine({centre.x, centre.y - r}, {centre.x, centre.y + r}, IM_COL32(0, 0, 0, 40));
     const ImVec2 dot{centre.x + static_cast<float>(side) * r,
                      centre.y - static_cast<float>(top) * r};
-    dl->AddCircleFilled(dot, 5.0f, IM_COL32(30, 80, 200, 255), 16);
+    dl->AddCircleFilled(dot, px(5.0f), IM_COL32(30, 80, 200, 255), 16);
     if (enabled && ImGui::IsItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
         const ImVec2 m = ImGui::GetIO().MousePos;
         double s = (m.x - centre.x) / r, t = -(m.y - centre.y) / r;
@@ -97,10 +113,10 @@ void seat_row(NewGame& d, std::size_t seat, const std::vector<std::string>& kind
     ImGui::PushID(static_cast<int>(seat));
     char buf[41];
     std::snprintf(buf, sizeof buf, "%s", d.names[seat].c_str());
-    ImGui::SetNextItemWidth(150);
+    ImGui::SetNextItemWidth(px(150));
     if (ImGui::InputText("##name", buf, sizeof buf) && buf[0] != '\0') d.names[seat] = buf;
     ImGui::SameLine();
-    ImGui::SetNextItemWidth(130);
+    ImGui::SetNextItemWidth(px(130));
     const std::string& current = d.players[seat];
     if (ImGui::BeginCombo("##kind", seat_words(current).c_str())) {
         for (const std::string& k : kinds) {
@@ -137,7 +153,7 @@ void new_game_dialog(PanelState& st, PanelActions& out) {
         ImGui::OpenPopup("New Game");
         st.new_game_open = false;
     }
-    ImGui::SetNextWindowSize(ImVec2(360, 0), ImGuiCond_Appearing);
+    ImGui::SetNextWindowSize(ImVec2(px(360), 0), ImGuiCond_Appearing);
     if (!ImGui::BeginPopupModal("New Game", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
     NewGame& d = st.draft;
     int game = d.game == rules::Game::eight_ball ? 0 : 1;
@@ -152,14 +168,14 @@ void new_game_dialog(PanelState& st, PanelActions& out) {
     if (d.game == rules::Game::eight_ball && ImGui::CollapsingHeader("House rules (8-ball)"))
         house_rules_editor(d.house_rules);
     ImGui::Separator();
-    const bool start = ImGui::Button("Start", ImVec2(120, 0));
+    const bool start = ImGui::Button("Start", ImVec2(px(120), 0));
     remember(st, "Start");
     if (start) {
         out.new_game = d;
         ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();
-    if (ImGui::Button("Cancel", ImVec2(120, 0))) ImGui::CloseCurrentPopup();
+    if (ImGui::Button("Cancel", ImVec2(px(120), 0))) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
 }
 
@@ -191,13 +207,14 @@ void original_controls(const Controller& c, const Settings& settings, PanelState
     if (ImGui::Checkbox("Sound", &sound)) out.sound = sound;
     remember(st, "Sound");
     if (full_button(st, "Change View")) out.change_view = true;
-    if (full_button(st, "Restart")) {
+    const auto [restart, exit] = button_pair(st, "Restart", "Exit");
+    if (restart) {
         if (s.history().empty() || s.phase() == game::Phase::game_over)
             out.restart = true;
         else
             st.confirm_restart = true;
     }
-    if (full_button(st, "Exit")) out.exit = true;
+    if (exit) out.exit = true;
 }
 
 // The information bar: whose turn, the groups, the last shot in words; and any pending choice.
@@ -253,31 +270,56 @@ void stroke_controls(const Controller& c, PanelActions& out) {
     }
 }
 
-// Aim guide, Strike, Hint, Skip or Replay, New Game and the controls' help.
+// The rows of play_buttons, kept at the panel's foot.
+constexpr int footer_rows = 4;
+
+float footer_height() {
+    return footer_rows * ImGui::GetFrameHeightWithSpacing() + ImGui::GetStyle().ItemSpacing.y;
+}
+
+// Aim guide, Strike and Hint, Skip or Replay, New Game and Controls: one row each, always in
+// view at the panel's foot.
 void play_buttons(const Controller& c, const Settings& settings, PanelState& st,
                   PanelActions& out) {
+    ImGui::Separator();
     if (auto g = aim_guide_combo(st, settings.aim_guide)) out.aim_guide = g;
     if (c.human_to_act() && c.session().phase() == game::Phase::shoot) {
-        if (full_button(st, "Strike")) out.strike = true;
-        if (full_button(st, "Hint")) out.hint = true;
+        const auto [strike, hint] = button_pair(st, "Strike", "Hint");
+        out.strike = strike;
+        out.hint = hint;
+    } else {
+        ImGui::Dummy(ImVec2(0.0f, ImGui::GetFrameHeight()));
     }
     if (c.moving()) {
         if (full_button(st, "Skip")) out.skip = true;
     } else if (c.playback().has_shot() && !c.busy()) {
         if (full_button(st, "Replay")) out.replay = true;
+    } else {
+        ImGui::Dummy(ImVec2(0.0f, ImGui::GetFrameHeight()));
     }
-    ImGui::Separator();
-    if (full_button(st, "New Game...")) open_new_game(st, settings);
-    if (ImGui::CollapsingHeader("Controls")) {
-        ImGui::TextDisabled("Right-drag: aim, release: strike");
-        ImGui::TextDisabled("Left-drag: aim (or move ball in hand)");
-        ImGui::TextDisabled("Shift while dragging: fine aim");
-        ImGui::TextDisabled("Click a ball, then a pocket: call");
-        ImGui::TextDisabled("Arrows: aim (Shift finer), power");
-        ImGui::TextDisabled("Space strike, S skip, P replay");
-        ImGui::TextDisabled("V view, O free view, wheel zoom");
-        ImGui::TextDisabled("R restart, Esc menu, F11 fullscreen");
+    const auto [new_game, controls] = button_pair(st, "New Game...", "Controls");
+    if (new_game) open_new_game(st, settings);
+    if (controls) st.controls_open = true;
+}
+
+// The mouse and the keys, in a window of their own so that they never push the buttons away.
+void controls_dialog(PanelState& st) {
+    if (st.controls_open) {
+        ImGui::OpenPopup("Controls");
+        st.controls_open = false;
     }
+    if (!ImGui::BeginPopupModal("Controls", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    for (const char* line :
+         {"Right-drag: aim; release: strike", "Left-drag: aim (or move the ball in hand)",
+          "Shift while aiming: finer", "Click a ball, then a pocket: call",
+          "Arrows: aim (Shift finer) and power", "Space: strike", "S or Enter: skip the shot",
+          "P: replay it", "H: hint", "G: aim guide level", "V: change view, O: free view",
+          "Wheel: zoom", "R: restart, Esc: menu, F11: fullscreen"})
+        ImGui::TextUnformatted(line);
+    const bool close = ImGui::Button("Close", ImVec2(-1.0f, 0.0f));
+    remember(st, "Close");
+    if (close) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
 }
 
 void restart_dialog(PanelState& st, PanelActions& out) {
@@ -287,14 +329,14 @@ void restart_dialog(PanelState& st, PanelActions& out) {
     }
     if (!ImGui::BeginPopupModal("Restart?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
     ImGui::Text("Abandon this game and rack again?");
-    const bool yes = ImGui::Button("Yes, restart", ImVec2(130, 0));
+    const bool yes = ImGui::Button("Yes, restart", ImVec2(px(130), 0));
     remember(st, "Yes, restart");
     if (yes) {
         out.restart = true;
         ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();
-    if (ImGui::Button("No", ImVec2(130, 0))) ImGui::CloseCurrentPopup();
+    if (ImGui::Button("No", ImVec2(px(130), 0))) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
 }
 
@@ -305,16 +347,16 @@ void menu_dialog(const Settings& settings, PanelState& st, PanelActions& out) {
         st.menu = false;
     }
     if (!ImGui::BeginPopupModal("Menu", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-    if (ImGui::Button("Resume", ImVec2(200, 0))) ImGui::CloseCurrentPopup();
-    if (ImGui::Button("New Game...", ImVec2(200, 0))) {
+    if (ImGui::Button("Resume", ImVec2(px(200), 0))) ImGui::CloseCurrentPopup();
+    if (ImGui::Button("New Game...", ImVec2(px(200), 0))) {
         open_new_game(st, settings);
         ImGui::CloseCurrentPopup();
     }
-    if (ImGui::Button("Restart", ImVec2(200, 0))) {
+    if (ImGui::Button("Restart", ImVec2(px(200), 0))) {
         st.confirm_restart = true;
         ImGui::CloseCurrentPopup();
     }
-    if (ImGui::Button("Save and exit", ImVec2(200, 0))) {
+    if (ImGui::Button("Save and exit", ImVec2(px(200), 0))) {
         out.exit = true;
         ImGui::CloseCurrentPopup();
     }
@@ -324,22 +366,26 @@ void menu_dialog(const Settings& settings, PanelState& st, PanelActions& out) {
 }  // namespace
 
 PanelActions draw_panel(const Controller& c, const Settings& settings, PanelState& st, float width,
-                        float height) {
+                        float height, float panel_width) {
     PanelActions out;
     st.widgets.clear();
     ImGui::SetNextWindowPos(ImVec2(width - panel_width, 0));
     ImGui::SetNextWindowSize(ImVec2(panel_width, height));
     ImGui::Begin("Coolaaber", nullptr,
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                     ImGuiWindowFlags_NoTitleBar);
+                     ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar |
+                     ImGuiWindowFlags_NoScrollWithMouse);
     header(c.session(), st);
     original_controls(c, settings, st, out);
+    ImGui::BeginChild("##middle", ImVec2(0.0f, -footer_height()));
     information_bar(c, st, out);
     stroke_controls(c, out);
+    ImGui::EndChild();
     play_buttons(c, settings, st, out);
     new_game_dialog(st, out);
     restart_dialog(st, out);
     menu_dialog(settings, st, out);
+    controls_dialog(st);
     ImGui::End();
     return out;
 }

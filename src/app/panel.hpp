@@ -49,6 +49,7 @@ struct PanelState {
     bool confirm_restart = false;  ///< ask "Restart this game?"
     bool menu = false;             ///< the Esc menu
     bool new_game_open = false;
+    bool controls_open = false;  ///< the Controls help
     NewGame draft;
     std::string notice;  ///< a message shown once at the top (e.g. a bad settings file)
     /// Where each labelled widget was drawn last frame (unit: px, window frame: x0, y0, x1, y1),
@@ -56,11 +57,11 @@ struct PanelState {
     std::map<std::string, std::array<float, 4>> widgets;
 };
 
-inline constexpr float panel_width = 300.0f;  ///< (unit: px)
-
-/// Draws the panel at the right edge of a `width` × `height` window. Call between
+/// Draws the panel, `panel_width` wide, at the right edge of a `width` × `height` window: the
+/// original controls at the top and the play buttons at the bottom always show, the information
+/// bar and the stroke's controls between them scroll when the window is too low. Call between
 /// ImGui::NewFrame() and ImGui::Render().
 PanelActions draw_panel(const Controller& controller, const Settings& settings, PanelState& state,
-                        float width, float height);
+                        float width, float height, float panel_width);
 
 }  // namespace app

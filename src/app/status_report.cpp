@@ -87,6 +87,8 @@ std::string status_json(const Controller& c, const Settings& s, CameraMode view,
     j["guide_end"] = c.preview() ? path_end_name(c.preview()->object_end) : "";
     j["widgets"] = frame.widgets;
     j["frames"] = frame.frames;
+    j["window"] = frame.window;
+    j["panel_width"] = frame.panel_width;
     j["drawn"] = {{"cue", frame.cue},
                   {"aim_guide", frame.aim_guide},
                   {"ball_in_hand", frame.ball_in_hand},

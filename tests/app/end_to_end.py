@@ -365,8 +365,40 @@ def guide_marks(exe, work):
         g.close()
 
 
+def resize(exe, work):
+    """The panel is laid out for the window: every control stays in view and the table keeps
+    most of the width, from 1280x720 down to 640x480; the Controls help fits too."""
+    g = Game(exe, work, "--game", "8ball", "--seed", "2")
+    controls = ["Sound", "Change View", "Restart", "Exit", "Aim guide level", "Strike", "Hint", "New Game...",
+                "Controls"]
+    try:
+        for w, h in ((1280, 720), (800, 600), (640, 480), (1280, 720)):
+            g.xdo("windowsize", "--sync", g.window, str(w), str(h))
+            s = g.wait(lambda s: s["window"] == [w, h] and all(k in s["widgets"] for k in controls), 10,
+                       f"the window at {w}x{h}")
+            time.sleep(0.3)
+            s = g.wait(lambda s: True, 1, "the status")
+            inside = [k for k in controls
+                      if 0 <= s["widgets"][k][0] and s["widgets"][k][2] <= w and 0 <= s["widgets"][k][1]
+                      and s["widgets"][k][3] <= h]
+            check(inside == controls, f"{w}x{h}: every control in view ({sorted(set(controls) - set(inside))} not)")
+            check(s["panel_width"] <= 0.4 * w and (w < 1280 or s["panel_width"] == 300),
+                  f"{w}x{h}: the panel is {s['panel_width']} px, the table {w - s['panel_width']} px")
+            g.screenshot(f"window-{w}x{h}.png")
+            if w == 640:
+                g.click_widget("Controls")
+                c = g.wait(lambda s: "Close" in s["widgets"], 10, "the Controls help")["widgets"]["Close"]
+                check(c[3] <= h, f"the Controls help fits in a {w}x{h} window (its Close at y {c[3]})")
+                g.screenshot("controls-help.png")
+                g.click_widget("Close")
+                g.wait(lambda s: "Close" not in s["widgets"], 10, "the help closed")
+    finally:
+        g.close()
+
+
 if __name__ == "__main__":
     test, exe, work = sys.argv[1], sys.argv[2], sys.argv[3]
     {"controls": controls, "game": whole_game, "hinted": hinted_game, "display": no_display,
-     "choice": no_choice_after_scratch, "kitchen": kitchen_foul, "guide": guide_marks}[test](exe, work)
+     "choice": no_choice_after_scratch, "kitchen": kitchen_foul, "guide": guide_marks,
+     "resize": resize}[test](exe, work)
     print("passed")
