@@ -227,6 +227,8 @@ void Controller::play(const physics::Stroke& stroke) {
     }
     refusal_.clear();
     info_at_strike_ = std::move(info_before);
+    words_at_strike_ = last_words_;
+    replaying_ = false;
     dry_shots_ = record->summary.down.empty() ? dry_shots_ + 1 : 0;
     preview_.reset();
     computer_decision_.reset();
@@ -239,7 +241,17 @@ void Controller::play(const physics::Stroke& stroke) {
 }
 
 std::vector<std::string> Controller::info() const {
-    return settled_ ? info_lines(session_, call()) : info_at_strike_;
+    return settled_ && !replaying() ? info_lines(session_, call()) : info_at_strike_;
+}
+
+std::vector<int> Controller::tray() const {
+    std::vector<int> out;
+    for (const game::Pocketed& p : session_.pocketed()) out.push_back(p.ball);
+    if (!playback_.moving()) return out;
+    for (const physics::Event& e : playback_.shot().events())
+        if (e.type == physics::EventType::pocket && e.time > playback_.time())
+            std::erase(out, e.ball(0));
+    return out;
 }
 
 void Controller::finish_shot() {
@@ -487,6 +499,7 @@ void Controller::replay() {
     if (busy() || !settled_ || !playback_.has_shot()) return;
     orientations_ = at_strike_;
     playback_.restart(stroke_lead);
+    replaying_ = true;
     ++shot_serial_;
 }
 

@@ -179,6 +179,21 @@ void new_game_dialog(PanelState& st, PanelActions& out) {
     ImGui::EndPopup();
 }
 
+// "Replay" over the table's top-left corner while the last shot is shown again.
+void replay_label(const Controller& c) {
+    if (!c.replaying()) return;
+    const char* text = "REPLAY";
+    ImFont* font = ImGui::GetFont();
+    const float size = ImGui::GetFontSize() * 1.6f;
+    const ImVec2 at{px(16.0f), px(12.0f)};
+    const ImVec2 extent = font->CalcTextSizeA(size, 1e9f, 0.0f, text);
+    ImDrawList* dl = ImGui::GetForegroundDrawList();
+    dl->AddRectFilled({at.x - px(8), at.y - px(4)},
+                      {at.x + extent.x + px(8), at.y + extent.y + px(4)}, IM_COL32(0, 0, 0, 150),
+                      px(4));
+    dl->AddText(font, size, at, IM_COL32(242, 204, 90, 255), text);
+}
+
 // The title line and any notice (e.g. a saved game set aside), dismissed with OK.
 void header(const game::Session& s, PanelState& st) {
     ImGui::TextColored(accent, "COOLAABER");
@@ -386,6 +401,7 @@ PanelActions draw_panel(const Controller& c, const Settings& settings, PanelStat
     restart_dialog(st, out);
     menu_dialog(settings, st, out);
     controls_dialog(st);
+    replay_label(c);
     ImGui::End();
     return out;
 }

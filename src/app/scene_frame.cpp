@@ -33,7 +33,7 @@ SceneFrame build_scene(const Controller& c, AimGuide aim_guide,
     const double R = c.session().config().params.ball_radius;
     for (const physics::BallState& b : c.balls_now())
         f.balls.push_back(render::ball_view(b, R, c.orientations().of(b.id)));
-    for (const game::Pocketed& p : c.session().pocketed()) f.tray.push_back(p.ball);
+    f.tray = c.tray();
     const AimPreview* preview = c.preview();
     const bool at_table = c.session().phase() == game::Phase::shoot && !c.moving();
     const auto cue = c.session().state().positions.find(0);

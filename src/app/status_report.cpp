@@ -61,6 +61,8 @@ std::string status_json(const Controller& c, const Settings& s, CameraMode view,
     const std::optional<rules::Player> p = session.to_act();
     j["to_act"] = p ? nlohmann::ordered_json(session.name(*p)) : nlohmann::ordered_json(nullptr);
     j["moving"] = c.moving();
+    j["replaying"] = c.replaying();
+    j["tray"] = c.tray();
     j["busy"] = c.busy();
     j["view"] = view_name(view);
     j["sound"] = s.sound;

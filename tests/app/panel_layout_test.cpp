@@ -25,13 +25,13 @@ TEST(PanelLayout, HiDpiDisplaysScaleThePanel) {
     EXPECT_EQ(p.scale, 3.0f);  // 1.5 for the window, times 2 for the display
     EXPECT_EQ(p.width, 900.0f);
     EXPECT_EQ(app::panel_layout(2560, 1440, 2.0f).width, app::panel_layout(1280, 720).width * 3.0f);
-    EXPECT_EQ(app::dpi_scale(nullptr, 0.0f), 1.0f);     // unknown
-    EXPECT_EQ(app::dpi_scale(nullptr, 96.0f), 1.0f);    // a standard display
-    EXPECT_EQ(app::dpi_scale(nullptr, 192.0f), 2.0f);   // HiDPI
-    EXPECT_EQ(app::dpi_scale(nullptr, 140.0f), 1.5f);   // rounded to a quarter
-    EXPECT_EQ(app::dpi_scale("1.25", 192.0f), 1.25f);   // the player's choice first
-    EXPECT_EQ(app::dpi_scale("large", 192.0f), 2.0f);   // not a number: ignored
-    EXPECT_EQ(app::dpi_scale("9", 0.0f), 1.0f);         // out of range: ignored
+    EXPECT_EQ(app::dpi_scale(nullptr, 0.0f), 1.0f);    // unknown
+    EXPECT_EQ(app::dpi_scale(nullptr, 96.0f), 1.0f);   // a standard display
+    EXPECT_EQ(app::dpi_scale(nullptr, 192.0f), 2.0f);  // HiDPI
+    EXPECT_EQ(app::dpi_scale(nullptr, 140.0f), 1.5f);  // rounded to a quarter
+    EXPECT_EQ(app::dpi_scale("1.25", 192.0f), 1.25f);  // the player's choice first
+    EXPECT_EQ(app::dpi_scale("large", 192.0f), 2.0f);  // not a number: ignored
+    EXPECT_EQ(app::dpi_scale("9", 0.0f), 1.0f);        // out of range: ignored
 }
 
 }  // namespace

@@ -43,6 +43,48 @@ TEST(PlainWords, ABallThatWasNotTheCallSaysSoAndWhatFollows) {
     EXPECT_EQ(c.info()[0], "Bob's turn");
 }
 
+// A replay shows the shot as it was: the panel's words at its strike, the tray without the
+// ball until it drops.
+TEST(PlainWords, AReplayShowsTheWordsAndTheTrayAsTheyWere) {
+    const physics::Table table = app_test::new_session().table();
+    const physics::Pocket& ne = table.pockets[static_cast<std::size_t>(physics::PocketId::NE)];
+    const physics::Vec2 from{1.6, 0.5};
+    const physics::Vec2 dir = (1.0 / physics::norm(ne.centre - from)) * (ne.centre - from);
+    const physics::Vec2 object = ne.centre - 0.5 * dir, cue = object - 0.8 * dir;
+    app::Controller c(
+        app_test::session_at({{0, cue}, {5, object}, {3, {0.5, 1.0}}, {8, {0.5, 0.3}}}),
+        app_test::options());
+    c.set_power(0.25);
+    c.set_spin(0.0, -0.4);
+    c.set_heading(std::atan2(dir.y, dir.x) * 180.0 / std::numbers::pi);
+    const std::vector<int> tray_before = c.tray();
+    const std::vector<std::string> info_before = c.info();
+    c.strike();
+    c.update(0.2);
+    ASSERT_TRUE(c.moving());
+    EXPECT_EQ(c.tray(), tray_before);  // the 5 still rolls
+    app_test::run_until_idle(c);
+    const std::vector<std::string> info_after = c.info();
+    const std::string words_after = c.last_shot_words();
+    ASSERT_NE(info_after, info_before);
+    std::vector<int> tray_after = tray_before;
+    tray_after.push_back(5);
+    ASSERT_EQ(c.tray(), tray_after);
+    EXPECT_FALSE(c.replaying());
+
+    c.replay();
+    c.update(0.2);
+    ASSERT_TRUE(c.replaying());
+    EXPECT_EQ(c.tray(), tray_before);
+    EXPECT_EQ(c.info(), info_before);
+    EXPECT_EQ(c.last_shot_words(), "");  // nothing had been played before it
+    app_test::run_until_idle(c);
+    EXPECT_FALSE(c.replaying());
+    EXPECT_EQ(c.tray(), tray_after);
+    EXPECT_EQ(c.info(), info_after);
+    EXPECT_EQ(c.last_shot_words(), words_after);
+}
+
 TEST(PlainWords, NineBallNamesTheBallToHit) {
     const game::Session s = app_test::new_session(rules::Game::nine_ball);
     const std::vector<std::string> lines = app::info_lines(s, rules::Call::nothing());
