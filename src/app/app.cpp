@@ -72,6 +72,7 @@ struct Table {
           controller(std::move(*setup.session), setup.controller),
           rig(camera_mode(setup.settings.view)) {
         panel.notice = setup.notice;
+        panel.notice_is_error = setup.notice_is_error;
         saved = setup.settings;
         controller.set_power(setup.settings.power);
     }
@@ -130,6 +131,7 @@ struct Table {
                 controller.replace(game::Session(new_game_config(s, opts.seed)), opts);
             } catch (const std::exception& e) {
                 panel.notice = e.what();
+                panel.notice_is_error = true;
             }
         }
     }
@@ -143,6 +145,7 @@ struct Table {
             saved = setup.settings;
         } catch (const std::exception& e) {
             panel.notice = std::string("The settings could not be saved: ") + e.what();
+            panel.notice_is_error = true;
             saved = setup.settings;  // say it once
         }
     }
@@ -343,7 +346,9 @@ int run_window(const AppOptions& options) {
                         if (!over_panel(mouse_x)) input.wheel(static_cast<float>(e.wheel.y));
                         break;
                     case SDL_KEYDOWN:
-                        if (!ImGui::GetIO().WantTextInput)
+                        // Not while a dialog is open: its buttons answer it, the table waits.
+                        if (!ImGui::GetIO().WantTextInput &&
+                            !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId))
                             on_key(t, window, e.key.keysym.sym,
                                    (e.key.keysym.mod & KMOD_SHIFT) != 0);
                         break;

@@ -322,8 +322,10 @@ void Controller::apply_hint(const game::Decision& d) {
             // keep the cue ball where the player put it
         }
     }
-    aim_ = human_aim_ = Aim{d.stroke.heading_deg, power_of_speed(d.stroke.speed), d.stroke.side,
-                            d.stroke.top, d.stroke.elevation_deg};
+    // The hint's stroke is this shot's aim only: the player's own spin and elevation come back
+    // at the next turn.
+    aim_ = Aim{d.stroke.heading_deg, power_of_speed(d.stroke.speed), d.stroke.side, d.stroke.top,
+               d.stroke.elevation_deg};
     if (d.call.is_ball() || d.call.is_safety()) manual_call_ = d.call;
     refresh_preview();
 }

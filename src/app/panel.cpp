@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "app/plain_words.hpp"
+#include "app/seats.hpp"
 
 namespace app {
 
@@ -74,13 +75,6 @@ std::optional<std::pair<double, double>> spin_picker(double side, double top, bo
         if (s != side || t != top) return std::pair{s, t};
     }
     return std::nullopt;
-}
-
-// "Human", "Computer (random)", "Computer level 3".
-std::string seat_words(const std::string& kind) {
-    if (kind == "human") return "Human";
-    if (kind == "random") return "Computer (random)";
-    return "Computer level " + kind.substr(3);
 }
 
 // "Aim guide: [level]"; returns the level picked, when one was.
@@ -203,7 +197,10 @@ void header(const game::Session& s, PanelState& st) {
                         s.game_number() + 1);
     if (!st.notice.empty()) {
         ImGui::PushTextWrapPos(0.0f);
-        ImGui::TextColored(warning, "%s", st.notice.c_str());
+        if (st.notice_is_error)
+            ImGui::TextColored(warning, "%s", st.notice.c_str());
+        else
+            ImGui::TextUnformatted(st.notice.c_str());
         ImGui::PopTextWrapPos();
         if (ImGui::SmallButton("OK")) st.notice.clear();
     }

@@ -51,7 +51,8 @@ struct PanelState {
     bool new_game_open = false;
     bool controls_open = false;  ///< the Controls help
     NewGame draft;
-    std::string notice;  ///< a message shown once at the top (e.g. a bad settings file)
+    std::string notice;            ///< a message shown once at the top (e.g. a bad settings file)
+    bool notice_is_error = false;  ///< drawn as a warning (else as news)
     /// Where each labelled widget was drawn last frame (unit: px, window frame: x0, y0, x1, y1),
     /// for the status file that end-to-end tests click by.
     std::map<std::string, std::array<float, 4>> widgets;

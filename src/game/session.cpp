@@ -309,6 +309,12 @@ void Session::declare_stalemate() {
 }
 
 void Session::restart() {
+    if (history_.empty() && !winner_) {  // nothing played: the same game, racked again
+        pending_.reset();
+        rack_number_ = 0;
+        rack(rules::initial_state(config_.game, breaker_of_game(game_number_)));
+        return;
+    }
     ++game_number_;
     rack_number_ = 0;
     winner_.reset();

@@ -390,6 +390,9 @@ def resize(exe, work):
                 c = g.wait(lambda s: "Close" in s["widgets"], 10, "the Controls help")["widgets"]["Close"]
                 check(c[3] <= h, f"the Controls help fits in a {w}x{h} window (its Close at y {c[3]})")
                 g.screenshot("controls-help.png")
+                key(g, "space")
+                time.sleep(0.5)
+                check(g.read()["shots"] == 0 and not g.read()["moving"], "Space does not strike while a dialog is open")
                 g.click_widget("Close")
                 g.wait(lambda s: "Close" not in s["widgets"], 10, "the help closed")
     finally:

@@ -538,6 +538,22 @@ TEST(Session, NoChoiceWhereTheOptionsLeadToTheSamePosition) {
     EXPECT_EQ(Session::from_json(s.to_json()).to_json(), s.to_json());
 }
 
+TEST(Session, RestartBeforeTheFirstShotRacksTheSameGameAgain) {
+    Session s(config_for(Game::eight_ball));
+    const auto rack = s.state().positions;
+    s.place_cue_ball(break_spot);
+    s.restart();
+    EXPECT_EQ(s.game_number(), 0);
+    EXPECT_EQ(s.to_act(), A);  // the break is not given away
+    EXPECT_EQ(s.phase(), Phase::place_cue_ball);
+    EXPECT_EQ(s.state().positions, rack);
+    s.place_cue_ball(break_spot);
+    s.play({8.0, 0.0});
+    s.restart();  // after a shot: the next game, the other breaker
+    EXPECT_EQ(s.game_number(), 1);
+    EXPECT_EQ(s.to_act(), B);
+}
+
 TEST(Session, StrokesAreChecked) {
     TableState t = after_break();
     Session s = session_with(config_for(Game::nine_ball), t);
