@@ -45,23 +45,50 @@ const physics::Event* next_collision(const physics::Shot& shot, std::size_t from
     return nullptr;
 }
 
+// The pocket whose mouth the straight line from `from` along `vel` passes through (the line
+// crosses the segment between the jaw noses), nearest first; empty when it points at none.
 std::optional<int> pocket_in_direction(const physics::Table& table, physics::Vec2 from,
                                        physics::Vec2 vel) {
-    const double speed = physics::norm(vel);
-    if (!(speed > 0.0)) return std::nullopt;
     std::optional<int> best;
-    double best_cos = 0.0;
+    double best_t = 1e9;
     for (const physics::Pocket& p : table.pockets) {
-        const physics::Vec2 d = p.centre - from;
-        const double dist = physics::norm(d);
-        if (!(dist > 0.0)) continue;
-        const double c = physics::dot(d, vel) / (dist * speed);
-        if (c > best_cos) {
-            best_cos = c;
+        const physics::Vec2 m = p.mouth_b - p.mouth_a;
+        const double den = vel.x * m.y - vel.y * m.x;
+        if (std::fabs(den) < 1e-12) continue;
+        const physics::Vec2 d = p.mouth_a - from;
+        const double t = (d.x * m.y - d.y * m.x) / den;      // along vel
+        const double u = (d.x * vel.y - d.y * vel.x) / den;  // along the mouth
+        if (t > 0.0 && u >= 0.0 && u <= 1.0 && t < best_t) {
+            best_t = t;
             best = p.id;
         }
     }
     return best;
+}
+
+// The cue ball's velocity just before the contact at `events[contact]`.
+physics::Vec2 cue_incoming(const physics::Shot& shot, std::size_t contact) {
+    const double t = shot.events()[contact].time;
+    return shot.state_at(0, t - 1e-9 * std::max(1.0, t)).vel;
+}
+
+PathEnd end_of(const physics::Event* next) {
+    if (!next) return PathEnd::none;
+    switch (next->type) {
+        case physics::EventType::pocket:
+            return PathEnd::pocket;
+        case physics::EventType::cushion:
+            return next->pocket >= 0 ? PathEnd::jaw : PathEnd::rail;
+        case physics::EventType::ball_ball:
+            return PathEnd::ball;
+        default:
+            return PathEnd::none;
+    }
+}
+
+glm::vec2 unit(physics::Vec2 v) {
+    const double n = physics::norm(v);
+    return n > 0.0 ? to_glm((1.0 / n) * v) : glm::vec2(0.0f);
 }
 
 }  // namespace
@@ -73,6 +100,7 @@ AimPreview preview_aim(const physics::Table& table, const physics::Params& param
     options.max_events = 4000;  // the guide needs the first contacts only
     const physics::Shot shot = physics::simulate(table, params, balls, &stroke, options);
     const auto& events = shot.events();
+    out.events = events;
     std::size_t contact = events.size();
     for (std::size_t i = 0; i < events.size(); ++i)
         if (events[i].type == physics::EventType::ball_ball && events[i].involves(0)) {
@@ -92,7 +120,12 @@ AimPreview preview_aim(const physics::Table& table, const physics::Params& param
     out.view.cue_path.push_back(to_glm(cue.pos));
     out.view.ghost = to_glm(cue.pos);
 
+    out.object_at = to_glm(object.pos);
+    out.object_dir = unit(object.vel);
+    out.cue_dir = unit(cue_incoming(shot, contact));
     const physics::Event* next = next_collision(shot, contact, object.id);
+    out.object_end = end_of(next);
+    if (next && next->time > hit.time + object_max_time) out.object_end = PathEnd::none;
     const double object_end = next ? next->time : hit.time + object_max_time;
     out.view.object_path =
         sample_path(shot, object.id, hit.time, std::min(object_end, hit.time + object_max_time));

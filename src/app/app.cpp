@@ -20,11 +20,13 @@
 
 #include "app/camera_rig.hpp"
 #include "app/controller.hpp"
+#include "app/display.hpp"
 #include "app/game_setup.hpp"
 #include "app/imgui_setup.hpp"
 #include "app/input.hpp"
 #include "app/painter.hpp"
 #include "app/panel.hpp"
+#include "app/panel_layout.hpp"
 #include "app/picking.hpp"
 #include "app/scene_frame.hpp"
 #include "app/seats.hpp"
@@ -70,6 +72,7 @@ struct Table {
           controller(std::move(*setup.session), setup.controller),
           rig(camera_mode(setup.settings.view)) {
         panel.notice = setup.notice;
+        panel.notice_is_error = setup.notice_is_error;
         saved = setup.settings;
         controller.set_power(setup.settings.power);
     }
@@ -120,6 +123,7 @@ struct Table {
             s.names = a.new_game->names;
             s.players = a.new_game->players;
             s.house_rules = a.new_game->house_rules;
+            s.aim_guide = a.new_game->aim_guide;
             ControllerOptions opts = setup.controller;
             opts.players = s.players;
             opts.seed = fresh_seed();
@@ -127,6 +131,7 @@ struct Table {
                 controller.replace(game::Session(new_game_config(s, opts.seed)), opts);
             } catch (const std::exception& e) {
                 panel.notice = e.what();
+                panel.notice_is_error = true;
             }
         }
     }
@@ -140,6 +145,7 @@ struct Table {
             saved = setup.settings;
         } catch (const std::exception& e) {
             panel.notice = std::string("The settings could not be saved: ") + e.what();
+            panel.notice_is_error = true;
             saved = setup.settings;  // say it once
         }
     }
@@ -193,7 +199,7 @@ void on_key(Table& t, SDL_Window* window, SDL_Keycode key, bool shift) {
             t.controller.hint();
             break;
         case SDLK_g:
-            t.setup.settings.aim_guide = !t.setup.settings.aim_guide;
+            t.setup.settings.aim_guide = next_aim_guide(t.setup.settings.aim_guide);
             break;
         case SDLK_o:
             t.rig.set_mode(
@@ -232,19 +238,8 @@ std::optional<GameSetup> set_up_or_report(const AppOptions& options) {
 int run_window(const AppOptions& options) {
     std::optional<GameSetup> setup = set_up_or_report(options);
     if (!setup) return 2;
-    const auto set = [](const char* v) { return std::getenv(v) && *std::getenv(v); };
-    if (!set("DISPLAY") && !set("WAYLAND_DISPLAY") && !set("SDL_VIDEODRIVER")) {
-        std::fprintf(
-            stderr,
-            "coolaaber: no display (DISPLAY and WAYLAND_DISPLAY are not set): run it in a desktop "
-            "session, under a virtual display (xvfb-run -a ./play), or render a picture with "
-            "--screenshot FILE\n");
-        return 1;
-    }
-    if (SDL_Init(SDL_INIT_VIDEO | SDL_INIT_TIMER) != 0) {
-        std::fprintf(stderr,
-                     "coolaaber: cannot open a window: %s (is a display available? try xvfb-run)\n",
-                     SDL_GetError());
+    if (const std::optional<std::string> why = open_video()) {
+        std::fprintf(stderr, "coolaaber: %s\n", why->c_str());
         return 1;
     }
     SDL_GL_SetAttribute(SDL_GL_CONTEXT_MAJOR_VERSION, 3);
@@ -258,7 +253,7 @@ int run_window(const AppOptions& options) {
         SDL_CreateWindow("Coolaaber", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
                          s0.window_width, s0.window_height, flags);
     if (!window) {
-        std::fprintf(stderr, "coolaaber: cannot create the window: %s\n", SDL_GetError());
+        std::fprintf(stderr, "coolaaber: cannot open a window: %s\n", SDL_GetError());
         SDL_Quit();
         return 1;
     }
@@ -286,6 +281,9 @@ int run_window(const AppOptions& options) {
         sound.set_muted(!t.setup.settings.sound);
         Painter painter(t.controller.session().table(),
                         t.controller.session().config().params.ball_radius);
+        float dpi = 0.0f;
+        if (SDL_GetDisplayDPI(0, nullptr, &dpi, nullptr) != 0) dpi = 0.0f;
+        const float ui_scale = dpi_scale(std::getenv("COOLAABER_UI_SCALE"), dpi);
         std::optional<StatusFile> status;
         if (options.status_file) status.emplace(*options.status_file);
 
@@ -348,8 +346,11 @@ int run_window(const AppOptions& options) {
                         if (!over_panel(mouse_x)) input.wheel(static_cast<float>(e.wheel.y));
                         break;
                     case SDL_KEYDOWN:
-                        if (!ImGui::GetIO().WantTextInput)
-                            on_key(t, window, e.key.keysym.sym, key_shift());
+                        // Not while a dialog is open: its buttons answer it, the table waits.
+                        if (!ImGui::GetIO().WantTextInput &&
+                            !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId))
+                            on_key(t, window, e.key.keysym.sym,
+                                   (e.key.keysym.mod & KMOD_SHIFT) != 0);
                         break;
                     case SDL_WINDOWEVENT:
                         if (e.window.event == SDL_WINDOWEVENT_SIZE_CHANGED &&
@@ -390,7 +391,9 @@ int run_window(const AppOptions& options) {
             // ---- Draw
             int w = 0, h = 0;
             SDL_GL_GetDrawableSize(window, &w, &h);
-            painter.resize(w, h);
+            const PanelLayout layout = panel_layout(w, h, ui_scale);
+            painter.resize(w, h, static_cast<int>(layout.width));
+            set_ui_scale(layout.scale);
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplSDL2_NewFrame();
             // ImGui 1.86's SDL backend reads the global mouse state, stale under Xvfb/XTEST:
@@ -402,8 +405,9 @@ int run_window(const AppOptions& options) {
                 mouse_pressed[i] = false;
             }
             ImGui::NewFrame();
-            const PanelActions actions = draw_panel(t.controller, t.setup.settings, t.panel,
-                                                    static_cast<float>(w), static_cast<float>(h));
+            const PanelActions actions =
+                draw_panel(t.controller, t.setup.settings, t.panel, static_cast<float>(w),
+                           static_cast<float>(h), layout.width);
             ImGui::Render();
             t.apply(actions);
             if (!mouse_down[0] && !mouse_down[1] && !mouse_down[2])
@@ -423,8 +427,15 @@ int run_window(const AppOptions& options) {
             ++frames;
             if (status)
                 status->write(status_json(t.controller, t.setup.settings, t.rig.mode(),
-                                          {t.panel.widgets, frames, scene.cue.has_value(),
-                                           scene.show_aim, scene.ball_in_hand.has_value()}));
+                                          {t.panel.widgets,
+                                           frames,
+                                           scene.cue.has_value(),
+                                           scene.show_aim,
+                                           scene.ball_in_hand.has_value(),
+                                           static_cast<int>(scene.aim.marks.size()),
+                                           scene.show_aim && scene.aim.illegal,
+                                           {w, h},
+                                           static_cast<int>(layout.width)}));
         }
         t.save_and_close();
         ImGui_ImplOpenGL3_Shutdown();
@@ -448,7 +459,10 @@ int run_screenshot(const AppOptions& options) {
         ImGui_ImplOpenGL3_Init("#version 330 core");
         Painter painter(t.controller.session().table(),
                         t.controller.session().config().params.ball_radius);
-        painter.resize(w, h);
+        const PanelLayout layout =
+            panel_layout(w, h, dpi_scale(std::getenv("COOLAABER_UI_SCALE"), 0.0f));
+        painter.resize(w, h, static_cast<int>(layout.width));
+        set_ui_scale(layout.scale);
         ImGuiIO& io = ImGui::GetIO();
         io.DisplaySize = ImVec2(static_cast<float>(w), static_cast<float>(h));
         io.DeltaTime = 1.0f / 60.0f;
@@ -457,7 +471,7 @@ int run_screenshot(const AppOptions& options) {
             ImGui_ImplOpenGL3_NewFrame();
             ImGui::NewFrame();
             (void)draw_panel(t.controller, t.setup.settings, t.panel, static_cast<float>(w),
-                             static_cast<float>(h));
+                             static_cast<float>(h), layout.width);
             ImGui::Render();
         }
         const float aspect =

@@ -10,6 +10,7 @@
 #include "app/seats.hpp"
 #include "game/stroke_noise.hpp"
 #include "rules/eight_ball.hpp"
+#include "rules/judge.hpp"
 
 namespace app {
 
@@ -30,6 +31,13 @@ std::vector<int> legal_targets(const game::Session& s) {
     if (st.shot == rules::Shot::break_shot) return {st.on_table.begin(), st.on_table.end()};
     const std::set<int> legal = rules::eight_ball_legal_first(st);
     return {legal.begin(), legal.end()};
+}
+
+// With ball in hand in the kitchen, a ball behind the head string is no target: the cue ball
+// must cross the head string before it touches a ball (rules::Foul::bad_play_from_kitchen).
+bool behind_head_string(const game::Session& s, physics::Vec2 p) {
+    return s.ball_in_hand() == rules::BallInHand::kitchen &&
+           p.x < s.ruleset().table.head_string_x();
 }
 
 bool calls_count(const game::Session& s) {
@@ -109,7 +117,7 @@ rules::Call Controller::call() const {
     if (!calls_count(session_)) return rules::Call::nothing();
     if (computer_decision_) return computer_decision_->call;
     if (manual_call_) return *manual_call_;
-    if (preview_ && preview_->first_ball && preview_->pocket) {
+    if (preview_ && preview_->first_ball && preview_->pocket && aim_foul_.empty()) {
         const std::vector<int> legal = legal_targets(session_);
         if (std::find(legal.begin(), legal.end(), *preview_->first_ball) != legal.end())
             return rules::Call::ball_in(*preview_->first_ball, *preview_->pocket);
@@ -174,7 +182,8 @@ void Controller::aim_at_target() {
     double best_d = 1e9;
     for (int id : legal_targets(session_)) {
         const auto it = session_.state().positions.find(id);
-        if (it == session_.state().positions.end()) continue;
+        if (it == session_.state().positions.end() || behind_head_string(session_, it->second))
+            continue;
         const double d = physics::norm(it->second - cue->second);
         if (d < best_d) {
             best_d = d;
@@ -187,12 +196,21 @@ void Controller::aim_at_target() {
 }
 
 void Controller::refresh_preview() {
+    aim_foul_.clear();
     if (session_.phase() != game::Phase::shoot) {
         preview_.reset();
         return;
     }
     const std::vector<physics::BallState> balls = session_.balls();
     preview_ = preview_aim(session_.table(), session_.config().params, balls, stroke_of(aim_));
+    // The rules' own verdict on the shot as aimed; only what the player can see coming is
+    // said (where the cue ball meets its first ball), not what the exact simulation foresees.
+    const rules::Verdict v = rules::judge(session_.ruleset(), session_.state(), preview_->events);
+    if (v.has(rules::Foul::bad_play_from_kitchen) && preview_->first_ball)
+        aim_foul_ = fmt::format(
+            "Foul as aimed: the {} lies in the kitchen. From the kitchen the cue ball must "
+            "cross the head string before it touches a ball.",
+            *preview_->first_ball);
 }
 
 // ---- The stroke and its playback
@@ -209,6 +227,8 @@ void Controller::play(const physics::Stroke& stroke) {
     }
     refusal_.clear();
     info_at_strike_ = std::move(info_before);
+    words_at_strike_ = last_words_;
+    replaying_ = false;
     dry_shots_ = record->summary.down.empty() ? dry_shots_ + 1 : 0;
     preview_.reset();
     computer_decision_.reset();
@@ -221,7 +241,17 @@ void Controller::play(const physics::Stroke& stroke) {
 }
 
 std::vector<std::string> Controller::info() const {
-    return settled_ ? info_lines(session_, call()) : info_at_strike_;
+    return settled_ && !replaying() ? info_lines(session_, call()) : info_at_strike_;
+}
+
+std::vector<int> Controller::tray() const {
+    std::vector<int> out;
+    for (const game::Pocketed& p : session_.pocketed()) out.push_back(p.ball);
+    if (!playback_.moving()) return out;
+    for (const physics::Event& e : playback_.shot().events())
+        if (e.type == physics::EventType::pocket && e.time > playback_.time())
+            std::erase(out, e.ball(0));
+    return out;
 }
 
 void Controller::finish_shot() {
@@ -292,8 +322,10 @@ void Controller::apply_hint(const game::Decision& d) {
             // keep the cue ball where the player put it
         }
     }
-    aim_ = human_aim_ = Aim{d.stroke.heading_deg, power_of_speed(d.stroke.speed), d.stroke.side,
-                            d.stroke.top, d.stroke.elevation_deg};
+    // The hint's stroke is this shot's aim only: the player's own spin and elevation come back
+    // at the next turn.
+    aim_ = Aim{d.stroke.heading_deg, power_of_speed(d.stroke.speed), d.stroke.side, d.stroke.top,
+               d.stroke.elevation_deg};
     if (d.call.is_ball() || d.call.is_safety()) manual_call_ = d.call;
     refresh_preview();
 }
@@ -371,12 +403,11 @@ void Controller::set_elevation(double deg) {
 
 bool Controller::move_cue_ball(physics::Vec2 pos) {
     if (!human_to_act() || session_.ball_in_hand() == rules::BallInHand::none) return false;
-    try {
-        session_.place_cue_ball(pos);
-    } catch (const game::Refused& e) {
-        refusal_ = e.what();
+    if (std::string why = placement_words(session_, pos); !why.empty()) {
+        refusal_ = std::move(why);
         return false;
     }
+    session_.place_cue_ball(pos);
     refusal_.clear();
     refresh_preview();
     return true;
@@ -391,7 +422,7 @@ void Controller::click_table(physics::Vec2 pos) {
         const physics::Vec2 p = session_.state().positions.at(id);
         if (physics::norm(p - pos) > 1.3 * R) continue;
         if (std::find(legal.begin(), legal.end(), id) == legal.end()) {
-            refusal_ = fmt::format("the {} is not a ball you may call now", id);
+            refusal_ = fmt::format("You may not call the {} now.", id);
             return;
         }
         const int pocket = now.is_ball()                  ? now.pocket
@@ -407,7 +438,7 @@ void Controller::click_table(physics::Vec2 pos) {
                                         : preview_    ? preview_->first_ball
                                                       : std::nullopt;
         if (!ball || std::find(legal.begin(), legal.end(), *ball) == legal.end()) {
-            refusal_ = "click the ball to call first, then the pocket";
+            refusal_ = "Click the ball to call first, then the pocket.";
             return;
         }
         manual_call_ = rules::Call::ball_in(*ball, p.id);
@@ -470,6 +501,7 @@ void Controller::replay() {
     if (busy() || !settled_ || !playback_.has_shot()) return;
     orientations_ = at_strike_;
     playback_.restart(stroke_lead);
+    replaying_ = true;
     ++shot_serial_;
 }
 

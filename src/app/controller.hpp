@@ -86,11 +86,22 @@ class Controller {
     /// The call the next stroke will have: the player's own, else the proposal from the aim.
     rules::Call call() const;
     bool call_is_manual() const { return manual_call_.has_value(); }
-    /// The text of what the last shot did (empty before the first).
-    const std::string& last_shot_words() const { return last_words_; }
+    /// The text of what the last shot did (empty before the first); during a replay, as it was
+    /// at the replayed shot's strike.
+    const std::string& last_shot_words() const {
+        return replaying() ? words_at_strike_ : last_words_;
+    }
+    /// The last shot is being shown again (the P key, Replay).
+    bool replaying() const { return replaying_ && playback_.moving(); }
+    /// The pocketed object balls in the tray, in order: while a shot plays, only those that
+    /// have dropped by the playback time.
+    std::vector<int> tray() const;
     /// The information bar (whose turn, his group, who won: plain_words' info_lines). While a
     /// shot plays it stays as it was at the strike, so that the outcome shows when the balls stop.
     std::vector<std::string> info() const;
+    /// Why the stroke as aimed would be a foul, in a player's words (the guide is drawn red and
+    /// nothing is proposed as the call), else empty.
+    const std::string& aim_foul() const { return aim_foul_; }
     /// Why the last action was refused (shown in the panel), empty when it was not.
     const std::string& refusal() const { return refusal_; }
     /// Increments when a new shot starts playing (the app starts its sound then).
@@ -165,7 +176,10 @@ class Controller {
     int dry_shots_ = 0;    ///< computer-only games: shots with no ball down (stalemate rule)
     std::string last_words_;
     std::vector<std::string> info_at_strike_;  ///< info() while the last shot plays
+    std::string words_at_strike_;              ///< last_shot_words() at its strike
+    bool replaying_ = false;
     std::string refusal_;
+    std::string aim_foul_;
     int shot_serial_ = 0;
 };
 

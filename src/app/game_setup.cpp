@@ -4,6 +4,7 @@
 
 #include <chrono>
 
+#include "app/seats.hpp"
 #include "game/json_field.hpp"
 
 namespace app {
@@ -16,7 +17,7 @@ game::Config new_game_config(const Settings& s, std::uint64_t seed) {
     game::Config c;
     c.game = s.game;
     c.options = s.house_rules;
-    c.names = s.names;
+    c.names = seat_names(s.names, s.players);
     c.seed = seed;
     return c;
 }
@@ -27,7 +28,10 @@ GameSetup set_up_game(const AppOptions& o) {
     g.autosave_path = data_folder() / "saved-game.json";
     LoadedSettings loaded = load_settings(g.settings_path);
     g.settings = loaded.settings;
-    if (loaded.message) g.notice = *loaded.message;
+    if (loaded.message) {
+        g.notice = *loaded.message;
+        g.notice_is_error = true;
+    }
     if (loaded.left_in_place) g.settings_path.clear();
     Settings& s = g.settings;
     if (o.width) s.window_width = *o.width;
@@ -60,6 +64,7 @@ GameSetup set_up_game(const AppOptions& o) {
                 aside.empty() ? "it could not be renamed, so it is left as it is and this game "
                                 "will not be saved over it"
                               : "it was kept as " + aside.string();
+            g.notice_is_error = true;
             g.notice += fmt::format("{}The saved game could not be resumed ({}); {}.",
                                     g.notice.empty() ? "" : "\n", e.what(), kept);
             if (aside.empty()) g.autosave_path.clear();

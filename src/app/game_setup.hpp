@@ -22,6 +22,7 @@ struct GameSetup {
     std::optional<game::Session> session;
     ControllerOptions controller;
     std::string notice;  ///< shown in the panel (a settings or saved game kept aside, a resume)
+    bool notice_is_error = false;  ///< a file was bad (else: news, e.g. the game was resumed)
 };
 
 /// A new session's configuration from the settings (names, game, house rules) and a seed.

@@ -8,5 +8,7 @@ namespace app {
 /// installed (fonts-dejavu-core), else ImGui's built-in font.
 void create_imgui();
 void destroy_imgui();
+/// Scales the panel's text and widgets (panel_layout.hpp); cheap when `scale` is unchanged.
+void set_ui_scale(float scale);
 
 }  // namespace app

@@ -6,25 +6,24 @@
 
 #include <algorithm>
 
-#include "app/panel.hpp"
-
 namespace app {
 
 Painter::Painter(const physics::Table& table, double ball_radius) : renderer_(table, ball_radius) {}
 
-void Painter::resize(int width, int height) {
+void Painter::resize(int width, int height, int panel_width) {
     width = std::max(width, 64);
     height = std::max(height, 64);
-    if (view_ && width == width_ && height == height_) return;
+    if (view_ && width == width_ && height == height_ && panel_width == panel_) return;
     width_ = width;
     height_ = height;
+    panel_ = panel_width;
     view_ = std::make_unique<render::OffscreenTarget>(view_width(), height_, 4);
     moving_.reset();
     picture_.reset();
 }
 
 int Painter::view_width() const {
-    return std::max(16, width_ - static_cast<int>(panel_width));
+    return std::max(16, width_ - panel_);
 }
 
 void Painter::draw_table(const SceneFrame& scene, const render::Camera& camera,

@@ -15,8 +15,8 @@ namespace app {
 class Painter {
   public:
     Painter(const physics::Table& table, double ball_radius);
-    /// The window's size in pixels (the panel included).
-    void resize(int width, int height);
+    /// The window's size in pixels (the panel, `panel_width` px at the right, included).
+    void resize(int width, int height, int panel_width);
     /// Draws the table into the view at the left (width − panel). While the camera moves
     /// (`camera_moving`: aiming in the cue-ball view, a transition) the view is drawn without
     /// multisampling, which on a software renderer more than doubles the frame rate; a still
@@ -40,7 +40,7 @@ class Painter {
     std::unique_ptr<render::OffscreenTarget>
         moving_;  ///< the table while the camera moves, 1 sample
     std::unique_ptr<render::OffscreenTarget> picture_;  ///< capture(): the whole window
-    int width_ = 0, height_ = 0;
+    int width_ = 0, height_ = 0, panel_ = 0;
 };
 
 }  // namespace app

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "app/plain_words.hpp"
+#include "app/seats.hpp"
 
 namespace app {
 
@@ -27,13 +28,29 @@ bool full_button(PanelState& st, const char* label) {
     return pressed;
 }
 
+// Two buttons side by side, each half the row.
+std::pair<bool, bool> button_pair(PanelState& st, const char* a, const char* b) {
+    const float w = (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x) / 2;
+    const bool pa = ImGui::Button(a, ImVec2(w, 0.0f));
+    remember(st, a);
+    ImGui::SameLine();
+    const bool pb = ImGui::Button(b, ImVec2(w, 0.0f));
+    remember(st, b);
+    return {pa, pb};
+}
+
+// A length of the panel at scale 1, scaled with the text (panel_layout.hpp).
+float px(float v) {
+    return v * ImGui::GetFontSize() / 15.0f;
+}
+
 // The cue ball seen from the shooter, with a dot where the tip will hit; click or drag on it
 // to move the dot. Returns the new (side, top) when changed.
 std::optional<std::pair<double, double>> spin_picker(double side, double top, bool enabled) {
-    const float size = 96.0f;
+    const float size = px(96.0f);
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const ImVec2 centre{origin.x + size / 2, origin.y + size / 2};
-    const float r = size / 2 - 4.0f;
+    const float r = size / 2 - px(4.0f);
     ImGui::InvisibleButton("##spin", ImVec2(size, size));
     ImDrawList* dl = ImGui::GetWindowDrawList();
     dl->AddCircleFilled(centre, r, IM_COL32(238, 236, 226, 255), 48);
@@ -43,7 +60,7 @@ std::optional<std::pair<double, double>> spin_picker(double side, double top, bo
     dl->AddLine({centre.x, centre.y - r}, {centre.x, centre.y + r}, IM_COL32(0, 0, 0, 40));
     const ImVec2 dot{centre.x + static_cast<float>(side) * r,
                      centre.y - static_cast<float>(top) * r};
-    dl->AddCircleFilled(dot, 5.0f, IM_COL32(30, 80, 200, 255), 16);
+    dl->AddCircleFilled(dot, px(5.0f), IM_COL32(30, 80, 200, 255), 16);
     if (enabled && ImGui::IsItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
         const ImVec2 m = ImGui::GetIO().MousePos;
         double s = (m.x - centre.x) / r, t = -(m.y - centre.y) / r;
@@ -60,16 +77,28 @@ std::optional<std::pair<double, double>> spin_picker(double side, double top, bo
     return std::nullopt;
 }
 
-// "Human", "Computer (random)", "Computer level 3".
-std::string seat_words(const std::string& kind) {
-    if (kind == "human") return "Human";
-    if (kind == "random") return "Computer (random)";
-    return "Computer level " + kind.substr(3);
+// "Aim guide: [level]"; returns the level picked, when one was.
+std::optional<AimGuide> aim_guide_combo(PanelState& st, AimGuide now) {
+    std::optional<AimGuide> picked;
+    ImGui::Text("Aim guide");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(-1.0f);
+    const bool open = ImGui::BeginCombo("##aim_guide", aim_guide_words(now));
+    remember(st, "Aim guide level");
+    if (open) {
+        for (AimGuide g : {AimGuide::off, AimGuide::ghost, AimGuide::lines, AimGuide::practice}) {
+            if (ImGui::Selectable(aim_guide_words(g), g == now)) picked = g;
+            remember(st, aim_guide_words(g));
+        }
+        ImGui::EndCombo();
+    }
+    return picked;
 }
 
 // The New Game dialog opens with the current settings as its draft.
 void open_new_game(PanelState& st, const Settings& settings) {
-    st.draft = NewGame{settings.game, settings.names, settings.players, settings.house_rules};
+    st.draft = NewGame{settings.game, settings.names, settings.players, settings.house_rules,
+                       settings.aim_guide};
     st.new_game_open = true;
 }
 
@@ -78,10 +107,10 @@ void seat_row(NewGame& d, std::size_t seat, const std::vector<std::string>& kind
     ImGui::PushID(static_cast<int>(seat));
     char buf[41];
     std::snprintf(buf, sizeof buf, "%s", d.names[seat].c_str());
-    ImGui::SetNextItemWidth(150);
+    ImGui::SetNextItemWidth(px(150));
     if (ImGui::InputText("##name", buf, sizeof buf) && buf[0] != '\0') d.names[seat] = buf;
     ImGui::SameLine();
-    ImGui::SetNextItemWidth(130);
+    ImGui::SetNextItemWidth(px(130));
     const std::string& current = d.players[seat];
     if (ImGui::BeginCombo("##kind", seat_words(current).c_str())) {
         for (const std::string& k : kinds) {
@@ -118,7 +147,7 @@ void new_game_dialog(PanelState& st, PanelActions& out) {
         ImGui::OpenPopup("New Game");
         st.new_game_open = false;
     }
-    ImGui::SetNextWindowSize(ImVec2(360, 0), ImGuiCond_Appearing);
+    ImGui::SetNextWindowSize(ImVec2(px(360), 0), ImGuiCond_Appearing);
     if (!ImGui::BeginPopupModal("New Game", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
     NewGame& d = st.draft;
     int game = d.game == rules::Game::eight_ball ? 0 : 1;
@@ -129,18 +158,34 @@ void new_game_dialog(PanelState& st, PanelActions& out) {
     std::vector<std::string> kinds{"human", "random"};
     for (int level = 1; level <= 5; ++level) kinds.push_back(fmt::format("ai:{}", level));
     for (std::size_t seat = 0; seat < 2; ++seat) seat_row(d, seat, kinds);
+    if (auto g = aim_guide_combo(st, d.aim_guide)) d.aim_guide = *g;
     if (d.game == rules::Game::eight_ball && ImGui::CollapsingHeader("House rules (8-ball)"))
         house_rules_editor(d.house_rules);
     ImGui::Separator();
-    const bool start = ImGui::Button("Start", ImVec2(120, 0));
+    const bool start = ImGui::Button("Start", ImVec2(px(120), 0));
     remember(st, "Start");
     if (start) {
         out.new_game = d;
         ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();
-    if (ImGui::Button("Cancel", ImVec2(120, 0))) ImGui::CloseCurrentPopup();
+    if (ImGui::Button("Cancel", ImVec2(px(120), 0))) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
+}
+
+// "Replay" over the table's top-left corner while the last shot is shown again.
+void replay_label(const Controller& c) {
+    if (!c.replaying()) return;
+    const char* text = "REPLAY";
+    ImFont* font = ImGui::GetFont();
+    const float size = ImGui::GetFontSize() * 1.6f;
+    const ImVec2 at{px(16.0f), px(12.0f)};
+    const ImVec2 extent = font->CalcTextSizeA(size, 1e9f, 0.0f, text);
+    ImDrawList* dl = ImGui::GetForegroundDrawList();
+    dl->AddRectFilled({at.x - px(8), at.y - px(4)},
+                      {at.x + extent.x + px(8), at.y + extent.y + px(4)}, IM_COL32(0, 0, 0, 150),
+                      px(4));
+    dl->AddText(font, size, at, IM_COL32(242, 204, 90, 255), text);
 }
 
 // The title line and any notice (e.g. a saved game set aside), dismissed with OK.
@@ -152,7 +197,10 @@ void header(const game::Session& s, PanelState& st) {
                         s.game_number() + 1);
     if (!st.notice.empty()) {
         ImGui::PushTextWrapPos(0.0f);
-        ImGui::TextColored(warning, "%s", st.notice.c_str());
+        if (st.notice_is_error)
+            ImGui::TextColored(warning, "%s", st.notice.c_str());
+        else
+            ImGui::TextUnformatted(st.notice.c_str());
         ImGui::PopTextWrapPos();
         if (ImGui::SmallButton("OK")) st.notice.clear();
     }
@@ -171,13 +219,14 @@ void original_controls(const Controller& c, const Settings& settings, PanelState
     if (ImGui::Checkbox("Sound", &sound)) out.sound = sound;
     remember(st, "Sound");
     if (full_button(st, "Change View")) out.change_view = true;
-    if (full_button(st, "Restart")) {
+    const auto [restart, exit] = button_pair(st, "Restart", "Exit");
+    if (restart) {
         if (s.history().empty() || s.phase() == game::Phase::game_over)
             out.restart = true;
         else
             st.confirm_restart = true;
     }
-    if (full_button(st, "Exit")) out.exit = true;
+    if (exit) out.exit = true;
 }
 
 // The information bar: whose turn, the groups, the last shot in words; and any pending choice.
@@ -193,6 +242,7 @@ void information_bar(const Controller& c, PanelState& st, PanelActions& out) {
     }
     if (c.computer_thinking()) ImGui::TextDisabled("(thinking...)");
     if (!c.last_shot_words().empty()) ImGui::TextDisabled("%s", c.last_shot_words().c_str());
+    if (!c.aim_foul().empty()) ImGui::TextColored(warning, "%s", c.aim_foul().c_str());
     if (!c.refusal().empty()) ImGui::TextColored(warning, "%s", c.refusal().c_str());
     ImGui::PopTextWrapPos();
     if (std::optional<rules::Choice> choice = c.session().choice(); choice && c.human_to_act())
@@ -232,32 +282,56 @@ void stroke_controls(const Controller& c, PanelActions& out) {
     }
 }
 
-// Aim guide, Strike, Hint, Skip or Replay, New Game and the controls' help.
+// The rows of play_buttons, kept at the panel's foot.
+constexpr int footer_rows = 4;
+
+float footer_height() {
+    return footer_rows * ImGui::GetFrameHeightWithSpacing() + ImGui::GetStyle().ItemSpacing.y;
+}
+
+// Aim guide, Strike and Hint, Skip or Replay, New Game and Controls: one row each, always in
+// view at the panel's foot.
 void play_buttons(const Controller& c, const Settings& settings, PanelState& st,
                   PanelActions& out) {
-    bool guide = settings.aim_guide;
-    if (ImGui::Checkbox("Aim guide", &guide)) out.aim_guide = guide;
+    ImGui::Separator();
+    if (auto g = aim_guide_combo(st, settings.aim_guide)) out.aim_guide = g;
     if (c.human_to_act() && c.session().phase() == game::Phase::shoot) {
-        if (full_button(st, "Strike")) out.strike = true;
-        if (full_button(st, "Hint")) out.hint = true;
+        const auto [strike, hint] = button_pair(st, "Strike", "Hint");
+        out.strike = strike;
+        out.hint = hint;
+    } else {
+        ImGui::Dummy(ImVec2(0.0f, ImGui::GetFrameHeight()));
     }
     if (c.moving()) {
         if (full_button(st, "Skip")) out.skip = true;
     } else if (c.playback().has_shot() && !c.busy()) {
         if (full_button(st, "Replay")) out.replay = true;
+    } else {
+        ImGui::Dummy(ImVec2(0.0f, ImGui::GetFrameHeight()));
     }
-    ImGui::Separator();
-    if (full_button(st, "New Game...")) open_new_game(st, settings);
-    if (ImGui::CollapsingHeader("Controls")) {
-        ImGui::TextDisabled("Right-drag: aim, release: strike");
-        ImGui::TextDisabled("Left-drag: aim (or move ball in hand)");
-        ImGui::TextDisabled("Shift while dragging: fine aim");
-        ImGui::TextDisabled("Click a ball, then a pocket: call");
-        ImGui::TextDisabled("Arrows: aim (Shift finer), power");
-        ImGui::TextDisabled("Space strike, S skip, P replay");
-        ImGui::TextDisabled("V view, O free view, wheel zoom");
-        ImGui::TextDisabled("R restart, Esc menu, F11 fullscreen");
+    const auto [new_game, controls] = button_pair(st, "New Game...", "Controls");
+    if (new_game) open_new_game(st, settings);
+    if (controls) st.controls_open = true;
+}
+
+// The mouse and the keys, in a window of their own so that they never push the buttons away.
+void controls_dialog(PanelState& st) {
+    if (st.controls_open) {
+        ImGui::OpenPopup("Controls");
+        st.controls_open = false;
     }
+    if (!ImGui::BeginPopupModal("Controls", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    for (const char* line :
+         {"Right-drag: aim; release: strike", "Left-drag: aim (or move the ball in hand)",
+          "Shift while aiming: finer", "Click a ball, then a pocket: call",
+          "Arrows: aim (Shift finer) and power", "Space: strike", "S or Enter: skip the shot",
+          "P: replay it", "H: hint", "G: aim guide level", "V: change view, O: free view",
+          "Wheel: zoom", "R: restart, Esc: menu, F11: fullscreen"})
+        ImGui::TextUnformatted(line);
+    const bool close = ImGui::Button("Close", ImVec2(-1.0f, 0.0f));
+    remember(st, "Close");
+    if (close) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
 }
 
 void restart_dialog(PanelState& st, PanelActions& out) {
@@ -267,14 +341,14 @@ void restart_dialog(PanelState& st, PanelActions& out) {
     }
     if (!ImGui::BeginPopupModal("Restart?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
     ImGui::Text("Abandon this game and rack again?");
-    const bool yes = ImGui::Button("Yes, restart", ImVec2(130, 0));
+    const bool yes = ImGui::Button("Yes, restart", ImVec2(px(130), 0));
     remember(st, "Yes, restart");
     if (yes) {
         out.restart = true;
         ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();
-    if (ImGui::Button("No", ImVec2(130, 0))) ImGui::CloseCurrentPopup();
+    if (ImGui::Button("No", ImVec2(px(130), 0))) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
 }
 
@@ -285,16 +359,16 @@ void menu_dialog(const Settings& settings, PanelState& st, PanelActions& out) {
         st.menu = false;
     }
     if (!ImGui::BeginPopupModal("Menu", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-    if (ImGui::Button("Resume", ImVec2(200, 0))) ImGui::CloseCurrentPopup();
-    if (ImGui::Button("New Game...", ImVec2(200, 0))) {
+    if (ImGui::Button("Resume", ImVec2(px(200), 0))) ImGui::CloseCurrentPopup();
+    if (ImGui::Button("New Game...", ImVec2(px(200), 0))) {
         open_new_game(st, settings);
         ImGui::CloseCurrentPopup();
     }
-    if (ImGui::Button("Restart", ImVec2(200, 0))) {
+    if (ImGui::Button("Restart", ImVec2(px(200), 0))) {
         st.confirm_restart = true;
         ImGui::CloseCurrentPopup();
     }
-    if (ImGui::Button("Save and exit", ImVec2(200, 0))) {
+    if (ImGui::Button("Save and exit", ImVec2(px(200), 0))) {
         out.exit = true;
         ImGui::CloseCurrentPopup();
     }
@@ -304,22 +378,27 @@ void menu_dialog(const Settings& settings, PanelState& st, PanelActions& out) {
 }  // namespace
 
 PanelActions draw_panel(const Controller& c, const Settings& settings, PanelState& st, float width,
-                        float height) {
+                        float height, float panel_width) {
     PanelActions out;
     st.widgets.clear();
     ImGui::SetNextWindowPos(ImVec2(width - panel_width, 0));
     ImGui::SetNextWindowSize(ImVec2(panel_width, height));
     ImGui::Begin("Coolaaber", nullptr,
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                     ImGuiWindowFlags_NoTitleBar);
+                     ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar |
+                     ImGuiWindowFlags_NoScrollWithMouse);
     header(c.session(), st);
     original_controls(c, settings, st, out);
+    ImGui::BeginChild("##middle", ImVec2(0.0f, -footer_height()));
     information_bar(c, st, out);
     stroke_controls(c, out);
+    ImGui::EndChild();
     play_buttons(c, settings, st, out);
     new_game_dialog(st, out);
     restart_dialog(st, out);
     menu_dialog(settings, st, out);
+    controls_dialog(st);
+    replay_label(c);
     ImGui::End();
     return out;
 }

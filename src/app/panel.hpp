@@ -21,12 +21,13 @@ struct NewGame {
     std::array<std::string, 2> names{"Player 1", "Player 2"};
     std::array<std::string, 2> players{"human", "human"};
     rules::Options house_rules;
+    AimGuide aim_guide = AimGuide::lines;
 };
 
 struct PanelActions {
     std::optional<double> power;
     std::optional<bool> sound;
-    std::optional<bool> aim_guide;
+    std::optional<AimGuide> aim_guide;
     bool change_view = false;
     bool restart = false;  ///< confirmed
     bool exit = false;
@@ -48,18 +49,20 @@ struct PanelState {
     bool confirm_restart = false;  ///< ask "Restart this game?"
     bool menu = false;             ///< the Esc menu
     bool new_game_open = false;
+    bool controls_open = false;  ///< the Controls help
     NewGame draft;
-    std::string notice;  ///< a message shown once at the top (e.g. a bad settings file)
+    std::string notice;            ///< a message shown once at the top (e.g. a bad settings file)
+    bool notice_is_error = false;  ///< drawn as a warning (else as news)
     /// Where each labelled widget was drawn last frame (unit: px, window frame: x0, y0, x1, y1),
     /// for the status file that end-to-end tests click by.
     std::map<std::string, std::array<float, 4>> widgets;
 };
 
-inline constexpr float panel_width = 300.0f;  ///< (unit: px)
-
-/// Draws the panel at the right edge of a `width` × `height` window. Call between
+/// Draws the panel, `panel_width` wide, at the right edge of a `width` × `height` window: the
+/// original controls at the top and the play buttons at the bottom always show, the information
+/// bar and the stroke's controls between them scroll when the window is too low. Call between
 /// ImGui::NewFrame() and ImGui::Render().
 PanelActions draw_panel(const Controller& controller, const Settings& settings, PanelState& state,
-                        float width, float height);
+                        float width, float height, float panel_width);
 
 }  // namespace app

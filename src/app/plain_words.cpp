@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "physics/layout.hpp"
 #include "physics/table.hpp"
 #include "rules/eight_ball.hpp"
 
@@ -82,7 +83,42 @@ int lowest_on_table(const rules::GameState& s) {
     return s.on_table.empty() ? 0 : *s.on_table.begin();
 }
 
+// Why the turn passed after balls dropped without a foul: the call was not made (8-ball,
+// where calls count). Empty when the turn did not pass for that.
+std::string call_words(const game::Session& session, const game::ShotRecord& r,
+                       const std::vector<int>& down) {
+    const rules::Call& call = r.before.call;
+    if (session.config().game != rules::Game::eight_ball || down.empty() || r.verdict.foul ||
+        r.verdict.game_over || r.verdict.choice || r.verdict.state.shooter == r.shooter() ||
+        r.before.shot == rules::Shot::break_shot ||
+        !rules::call_counts(session.config().options, r.before))
+        return {};
+    const std::string next = session.name(r.verdict.state.shooter);
+    const std::string what = down.size() == 1 ? "It was" : "They were";
+    if (call.is_ball())
+        return fmt::format("{} not the call (the {} in the {} pocket): {}'s turn. ", what,
+                           call.ball, pocket_words(call.pocket), next);
+    if (call.is_safety()) return fmt::format("A safety was called: {}'s turn. ", next);
+    return fmt::format("Nothing was called, so it does not count: {}'s turn. ", next);
+}
+
 }  // namespace
+
+std::string placement_words(const game::Session& s, physics::Vec2 pos) {
+    const std::optional<std::string> why = s.check_cue_ball(pos);
+    if (!why) return {};
+    if (s.ball_in_hand() == rules::BallInHand::none) return *why;
+    if (s.ball_in_hand() == rules::BallInHand::kitchen &&
+        !(pos.x < s.ruleset().table.head_string_x()))
+        return "The cue ball goes behind the head string (the line across the table) with ball "
+               "in hand in the kitchen.";
+    const double R = s.config().params.ball_radius;
+    for (const auto& [id, p] : s.state().positions)
+        if (id != 0 && physics::norm(p - pos) < 2.0 * R - physics::overlap_tolerance)
+            return fmt::format("The cue ball can't go on top of the {}.", id);
+    if (!s.table().on_surface(pos, R)) return "The cue ball must go on the cloth.";
+    return *why;
+}
 
 std::string shot_words(const game::Session& session, const game::ShotRecord& r) {
     const std::string& who = session.name(r.shooter());
@@ -103,6 +139,7 @@ std::string shot_words(const game::Session& session, const game::ShotRecord& r) 
         for (rules::Foul f : r.verdict.fouls) list += (list.empty() ? "" : "; ") + foul_words(f);
         out += fmt::format("Foul by {}: {}. ", who, list);
     }
+    out += call_words(session, r, down);
     if (!r.verdict.respot.empty()) out += fmt::format("Spotted: {}. ", ball_list(r.verdict.respot));
     if (r.verdict.game_over && r.verdict.winner)
         out += fmt::format("{} wins the game.", session.name(*r.verdict.winner));

@@ -18,8 +18,13 @@ std::string pocket_words(int pocket);
 std::string group_words(rules::Group g);
 
 /// What the last shot did, in one or two sentences: the balls pocketed, the fouls, the result
-/// (e.g. "Anna pocketed the 3 and the 11. Foul: the cue ball went into a pocket.").
+/// (e.g. "Anna pocketed the 3 and the 11. Foul: the cue ball went into a pocket."), and why the
+/// turn passed when balls dropped that were not the call.
 std::string shot_words(const game::Session& session, const game::ShotRecord& record);
+
+/// Why the cue ball in hand may not go to `pos`, as a player says it ("The cue ball can't go on
+/// top of the 10."); empty when it may.
+std::string placement_words(const game::Session& session, physics::Vec2 pos);
 
 /// The information bar: whose turn it is and his group (or the ball to hit), ball in hand,
 /// the call, a pending choice, the three-foul warning, the winner. One line per entry.

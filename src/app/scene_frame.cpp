@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "app/aim_guide.hpp"
+
 namespace app {
 
 namespace {
@@ -25,13 +27,13 @@ render::FrameView SceneFrame::view(const render::Camera& camera) const {
     return v;
 }
 
-SceneFrame build_scene(const Controller& c, bool aim_guide,
+SceneFrame build_scene(const Controller& c, AimGuide aim_guide,
                        std::optional<physics::Vec2> dragged_to) {
     SceneFrame f;
     const double R = c.session().config().params.ball_radius;
     for (const physics::BallState& b : c.balls_now())
         f.balls.push_back(render::ball_view(b, R, c.orientations().of(b.id)));
-    for (const game::Pocketed& p : c.session().pocketed()) f.tray.push_back(p.ball);
+    f.tray = c.tray();
     const AimPreview* preview = c.preview();
     const bool at_table = c.session().phase() == game::Phase::shoot && !c.moving();
     const auto cue = c.session().state().positions.find(0);
@@ -44,8 +46,15 @@ SceneFrame build_scene(const Controller& c, bool aim_guide,
         k.elevation = static_cast<float>(a.elevation_deg * std::numbers::pi / 180.0);
         k.pull_back = pull_back(a.power);
         f.cue = k;
-        f.aim = preview->view;
-        f.show_aim = aim_guide;
+        const float Rf = static_cast<float>(R);
+        f.aim = guide_view(*preview, aim_guide, !c.aim_foul().empty(), Rf);
+        if (!c.aim_foul().empty() && preview->first_ball)  // the ball it may not hit first
+            add_foul_mark(f.aim, c.session().state().positions.at(*preview->first_ball), Rf);
+        const rules::Call call = c.call();
+        if (call.is_ball() && c.session().state().has(call.ball))
+            add_call_marks(f.aim, c.session().table(), c.session().state().positions.at(call.ball),
+                           call.pocket, Rf);
+        f.show_aim = aim_guide != AimGuide::off || !f.aim.marks.empty();
     }
     // The stroke: before the strike the cue moves from where it was drawn back to the ball.
     const game::Session& s = c.session();

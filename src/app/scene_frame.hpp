@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/controller.hpp"
+#include "app/settings.hpp"
 #include "render/renderer.hpp"
 
 namespace app {
@@ -23,9 +24,10 @@ struct SceneFrame {
     render::FrameView view(const render::Camera& camera) const;
 };
 
+/// The guide at the level `aim_guide`, and the call's marks whatever the level.
 /// `dragged_to`: where the player is dragging the cue ball in hand (shown red when it may
 /// not go there), else empty.
-SceneFrame build_scene(const Controller& controller, bool aim_guide,
+SceneFrame build_scene(const Controller& controller, AimGuide aim_guide,
                        std::optional<physics::Vec2> dragged_to = std::nullopt);
 
 }  // namespace app

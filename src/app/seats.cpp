@@ -1,5 +1,7 @@
 #include "app/seats.hpp"
 
+#include <fmt/format.h>
+
 #include <stdexcept>
 
 #include "ai/ai.hpp"
@@ -16,6 +18,24 @@ std::unique_ptr<game::Player> make_computer(const std::string& kind, std::uint64
     }
     throw std::invalid_argument("unknown player \"" + kind +
                                 "\" (expected human, random or ai:1 to ai:5)");
+}
+
+std::string seat_words(const std::string& kind) {
+    if (kind == "human") return "Human";
+    if (kind == "random") return "Computer (random)";
+    return "Computer (level " + kind.substr(3) + ")";
+}
+
+std::array<std::string, 2> seat_names(const std::array<std::string, 2>& names,
+                                      const std::array<std::string, 2>& kinds) {
+    std::array<std::string, 2> out = names;
+    const bool twins = kinds[0] == kinds[1];
+    for (std::size_t i = 0; i < 2; ++i) {
+        if (kinds[i] == "human" || names[i] != fmt::format("Player {}", i + 1)) continue;
+        out[i] = seat_words(kinds[i]);
+        if (twins) out[i].insert(std::string("Computer").size(), fmt::format(" {}", i + 1));
+    }
+    return out;
 }
 
 }  // namespace app

@@ -3,6 +3,7 @@
 // own execution noise (game::Player::execution_noise).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -16,5 +17,13 @@ namespace app {
 /// when it is unknown.
 std::unique_ptr<game::Player> make_computer(const std::string& kind, std::uint64_t seed,
                                             double noise);
+
+/// "Human", "Computer (random)", "Computer (level 3)".
+std::string seat_words(const std::string& kind);
+
+/// The names the game shows: a computer seat still under its default name ("Player 2") is
+/// called what it is ("Computer (level 3)"; numbered when both seats are the same computer).
+std::array<std::string, 2> seat_names(const std::array<std::string, 2>& names,
+                                      const std::array<std::string, 2>& kinds);
 
 }  // namespace app

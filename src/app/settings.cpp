@@ -29,7 +29,50 @@ constexpr std::string_view view_name(ViewMode v) {
     return v == ViewMode::overhead ? "overhead" : "cueball";
 }
 
+// "aim_guide": a level's name; true and false (files written before the levels) read as the
+// default level and off.
+AimGuide read_aim_guide(const game::Field& v) {
+    if (v.raw().is_boolean()) return v.boolean() ? AimGuide::lines : AimGuide::off;
+    const std::string name = v.string();
+    for (AimGuide g : {AimGuide::off, AimGuide::ghost, AimGuide::lines, AimGuide::practice})
+        if (name == aim_guide_name(g)) return g;
+    v.fail("unknown aim guide \"" + name +
+           "\" (expected \"off\", \"ghost\", \"lines\" or \"practice\")");
+}
+
 }  // namespace
+
+std::string_view aim_guide_name(AimGuide g) {
+    switch (g) {
+        case AimGuide::off:
+            return "off";
+        case AimGuide::ghost:
+            return "ghost";
+        case AimGuide::lines:
+            return "lines";
+        case AimGuide::practice:
+            return "practice";
+    }
+    return "lines";
+}
+
+AimGuide next_aim_guide(AimGuide g) {
+    return g == AimGuide::practice ? AimGuide::off : static_cast<AimGuide>(static_cast<int>(g) + 1);
+}
+
+const char* aim_guide_words(AimGuide g) {
+    switch (g) {
+        case AimGuide::off:
+            return "Off";
+        case AimGuide::ghost:
+            return "Ghost ball";
+        case AimGuide::lines:
+            return "Ghost ball and lines";
+        case AimGuide::practice:
+            return "Practice (full paths)";
+    }
+    return "?";
+}
 
 std::filesystem::path config_folder() {
     return xdg_folder("XDG_CONFIG_HOME", ".config");
@@ -51,7 +94,7 @@ std::string settings_to_json(const Settings& s) {
     j["view"] = view_name(s.view);
     j["sound"] = s.sound;
     j["power"] = s.power;
-    j["aim_guide"] = s.aim_guide;
+    j["aim_guide"] = aim_guide_name(s.aim_guide);
     j["names"] = s.names;
     j["players"] = s.players;
     j["noise"] = s.noise;
@@ -83,7 +126,7 @@ Settings settings_from_json(const std::string& text) {
     }
     if (auto v = f.find("sound")) s.sound = v->boolean();
     if (auto v = f.find("power")) s.power = v->number_in(0.0, 1.0);
-    if (auto v = f.find("aim_guide")) s.aim_guide = v->boolean();
+    if (auto v = f.find("aim_guide")) s.aim_guide = read_aim_guide(*v);
     if (auto v = f.find("names")) {
         if (v->array_size() != 2) v->fail("expected two names, e.g. [\"Player 1\", \"Player 2\"]");
         for (std::size_t i = 0; i < 2; ++i) {

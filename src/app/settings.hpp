@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "rules/game_state.hpp"
 #include "rules/options.hpp"
@@ -16,12 +17,27 @@ namespace app {
 
 enum class ViewMode { overhead, cue_ball };
 
+/// How much the aim guide shows (docs/app.md, "Aim guide").
+enum class AimGuide {
+    off,       ///< nothing
+    ghost,     ///< the line to the ghost ball, and the ghost ball
+    lines,     ///< and short lines: the object ball's direction, the cue ball's tangent line
+    practice,  ///< the simulated paths of both balls, and where the object ball's path ends
+};
+
+/// "off", "ghost", "lines", "practice" (the settings file's names).
+std::string_view aim_guide_name(AimGuide g);
+/// The next level (the G key): off, ghost, lines, practice, off...
+AimGuide next_aim_guide(AimGuide g);
+/// "Off", "Ghost ball", ... (the panel's names).
+const char* aim_guide_words(AimGuide g);
+
 struct Settings {
     rules::Game game = rules::Game::eight_ball;
     ViewMode view = ViewMode::overhead;
     bool sound = true;
     double power = 0.45;  ///< the Power slider (unit: 0–1 of the strongest stroke)
-    bool aim_guide = true;
+    AimGuide aim_guide = AimGuide::lines;
     std::array<std::string, 2> names{"Player 1", "Player 2"};
     /// Who plays each seat: "human", "random", or "ai:1" … "ai:5".
     std::array<std::string, 2> players{"human", "human"};

@@ -35,6 +35,22 @@ const char* view_name(CameraMode m) {
     return "?";
 }
 
+const char* path_end_name(PathEnd e) {
+    switch (e) {
+        case PathEnd::none:
+            return "none";
+        case PathEnd::pocket:
+            return "pocket";
+        case PathEnd::jaw:
+            return "jaw";
+        case PathEnd::rail:
+            return "rail";
+        case PathEnd::ball:
+            return "ball";
+    }
+    return "?";
+}
+
 }  // namespace
 
 std::string status_json(const Controller& c, const Settings& s, CameraMode view,
@@ -45,6 +61,8 @@ std::string status_json(const Controller& c, const Settings& s, CameraMode view,
     const std::optional<rules::Player> p = session.to_act();
     j["to_act"] = p ? nlohmann::ordered_json(session.name(*p)) : nlohmann::ordered_json(nullptr);
     j["moving"] = c.moving();
+    j["replaying"] = c.replaying();
+    j["tray"] = c.tray();
     j["busy"] = c.busy();
     j["view"] = view_name(view);
     j["sound"] = s.sound;
@@ -62,10 +80,22 @@ std::string status_json(const Controller& c, const Settings& s, CameraMode view,
                         ? nlohmann::ordered_json::array({cue->second.x, cue->second.y})
                         : nlohmann::ordered_json(nullptr);
     j["balls_on_table"] = session.state().on_table.size();
+    j["aim_guide_level"] = aim_guide_name(s.aim_guide);
+    j["aim_foul"] = c.aim_foul();
+    const rules::Call call = c.call();
+    j["call"] = call.is_ball()
+                    ? nlohmann::ordered_json{{"ball", call.ball}, {"pocket", call.pocket}}
+                    : nlohmann::ordered_json(nullptr);
+    j["guide_end"] = c.preview() ? path_end_name(c.preview()->object_end) : "";
     j["widgets"] = frame.widgets;
     j["frames"] = frame.frames;
-    j["drawn"] = {
-        {"cue", frame.cue}, {"aim_guide", frame.aim_guide}, {"ball_in_hand", frame.ball_in_hand}};
+    j["window"] = frame.window;
+    j["panel_width"] = frame.panel_width;
+    j["drawn"] = {{"cue", frame.cue},
+                  {"aim_guide", frame.aim_guide},
+                  {"ball_in_hand", frame.ball_in_hand},
+                  {"marks", frame.marks},
+                  {"aim_illegal", frame.aim_illegal}};
     return j.dump() + "\n";
 }
 

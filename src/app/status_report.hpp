@@ -14,14 +14,20 @@
 namespace app {
 
 /// {"phase", "to_act", "moving", "busy", "view", "sound", "power", "shots", "game_number",
-///  "info": [lines], "last_shot", "refusal", "winner", "heading_deg", "cue_ball", "balls_on_table"}
+///  "info": [lines], "last_shot", "refusal", "winner", "heading_deg", "cue_ball", "balls_on_table",
+///  "aim_guide_level", "aim_foul", "call": {"ball", "pocket"} or null, "guide_end",
+///  "widgets", "frames", "drawn"}
 /// What the last frame showed, beside the controller's state.
 struct FrameFacts {
     std::map<std::string, std::array<float, 4>> widgets;  ///< PanelState::widgets
-    long frames = 0;            ///< frames drawn so far (for measuring the frame rate)
-    bool cue = false;           ///< the cue stick was drawn
-    bool aim_guide = false;     ///< the aim guide was drawn
-    bool ball_in_hand = false;  ///< the ball-in-hand marker was drawn
+    long frames = 0;                  ///< frames drawn so far (for measuring the frame rate)
+    bool cue = false;                 ///< the cue stick was drawn
+    bool aim_guide = false;           ///< the aim guide was drawn
+    bool ball_in_hand = false;        ///< the ball-in-hand marker was drawn
+    int marks = 0;                    ///< rings drawn on the cloth (the call, the guide's path end)
+    bool aim_illegal = false;         ///< the guide was drawn red (a foul as aimed)
+    std::array<int, 2> window{0, 0};  ///< the window's size (unit: px)
+    int panel_width = 0;              ///< (unit: px)
 };
 
 std::string status_json(const Controller& c, const Settings& s, CameraMode view,

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "game/state_json.hpp"
 #include "physics/layout.hpp"
 #include "physics/rack.hpp"
 #include "physics/simulate.hpp"
@@ -22,6 +23,22 @@ physics::Table checked_table(const Config& c) {
         throw std::invalid_argument("game::Session: table: " + *e);
     if (!c.table.bounded) throw std::invalid_argument("game::Session: table: must have cushions");
     return physics::build_table(c.table);
+}
+
+// Whether every option of the verdict's choice gives the same next shot (e.g. after a scratch
+// on a legal 8-ball break, the table as it lies is already ball in hand in the kitchen): then
+// there is nothing to choose (docs/game.md, "Choices").
+bool options_lead_to_one_position(const rules::Ruleset& rules, const rules::Verdict& v) {
+    std::optional<std::string> first;
+    for (rules::ChoiceOption o : v.choice->options) {
+        const rules::Resolution r = rules::resolve_choice(rules, v, o);
+        if (r.rerack) return false;
+        const std::string position =
+            to_json(r.state).dump() + std::to_string(static_cast<int>(r.ball_in_hand));
+        if (first && *first != position) return false;
+        first = position;
+    }
+    return true;
 }
 
 std::string options_list(const rules::Choice& c) {
@@ -261,6 +278,8 @@ const ShotRecord& Session::play(const physics::Stroke& stroke) {
     }
     history_.push_back(std::move(record));
     last_shot_ = std::move(shot);
+    if (pending_ && options_lead_to_one_position(ruleset_, *pending_))
+        choose(pending_->choice->options.front());
     return history_.back();
 }
 
@@ -290,6 +309,12 @@ void Session::declare_stalemate() {
 }
 
 void Session::restart() {
+    if (history_.empty() && !winner_) {  // nothing played: the same game, racked again
+        pending_.reset();
+        rack_number_ = 0;
+        rack(rules::initial_state(config_.game, breaker_of_game(game_number_)));
+        return;
+    }
     ++game_number_;
     rack_number_ = 0;
     winner_.reset();

@@ -134,7 +134,8 @@ class Session {
     /// breaks (rules::stalemate).
     void declare_stalemate();
     /// Starts the next game (game_number() + 1): new rack, breaker_of_game(), empty history.
-    /// The score is kept; a game abandoned before its end counts for nobody.
+    /// The score is kept; a game abandoned before its end counts for nobody. Before the first
+    /// shot of a game it racks that game again instead (the same breaker, the same rack).
     void restart();
 
     // ---- Save and resume (docs/game.md, "Save format")

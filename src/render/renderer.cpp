@@ -665,11 +665,15 @@ void Renderer::draw(const FrameView& frame, int width, int height) {
     std::vector<SolidVertex> guide;
     if (frame.aim) {
         const AimView& aim = *frame.aim;
-        add_ribbon(guide, aim.cue_path, 0.0012f, 0.0006f, {0.95f, 0.95f, 0.95f});
-        add_ribbon(guide, aim.object_path, 0.0012f, 0.0006f, {1.0f, 0.85f, 0.3f});
-        add_ribbon(guide, aim.cue_after, 0.0009f, 0.0006f, {0.6f, 0.8f, 1.0f});
+        const glm::vec3 foul{1.0f, 0.2f, 0.15f};
+        const auto colour = [&](glm::vec3 c) { return aim.illegal ? foul : c; };
+        add_ribbon(guide, aim.cue_path, 0.0012f, 0.0006f, colour({0.95f, 0.95f, 0.95f}));
+        add_ribbon(guide, aim.object_path, 0.0012f, 0.0006f, colour({1.0f, 0.85f, 0.3f}));
+        add_ribbon(guide, aim.cue_after, 0.0009f, 0.0006f, colour({0.6f, 0.8f, 1.0f}));
         if (aim.ghost)
-            add_ring(guide, *aim.ghost, m.radius, 0.0012f, 0.0007f, {0.95f, 0.95f, 0.95f});
+            add_ring(guide, *aim.ghost, m.radius, 0.0012f, 0.0007f, colour({0.95f, 0.95f, 0.95f}));
+        for (const AimMark& k : aim.marks)
+            add_ring(guide, k.centre, k.radius, k.half_width, 0.0007f, k.colour);
     }
     m.draw_solid(guide, false, 0.7f, view_proj, eye);
 

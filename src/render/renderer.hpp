@@ -35,11 +35,22 @@ struct CueView {
 };
 
 /// The aim guide: polylines on the cloth and a ghost ball, all from the physics engine.
+/// A ring on the cloth (a disc when `half_width` ≥ `radius`): where the guide's path ends, the
+/// called ball, the called pocket.
+struct AimMark {
+    glm::vec2 centre{0.0f};   ///< (unit: m), table frame
+    float radius = 0.0f;      ///< (unit: m)
+    float half_width = 0.0f;  ///< of the ring's line (unit: m)
+    glm::vec3 colour{1.0f};
+};
+
 struct AimView {
     std::vector<glm::vec2> cue_path;     ///< cue ball to the first contact (unit: m)
     std::optional<glm::vec2> ghost;      ///< cue-ball centre at the first contact
     std::vector<glm::vec2> object_path;  ///< the object ball's direction after contact
     std::vector<glm::vec2> cue_after;    ///< the cue ball's direction after contact
+    bool illegal = false;                ///< the shot as aimed is a foul: the guide is drawn red
+    std::vector<AimMark> marks;
 };
 
 /// Ball-in-hand: the cue ball shown where the player would place it.

@@ -2,8 +2,12 @@
 // controller until its shot is over.
 #pragma once
 
+#include <map>
+#include <nlohmann/json.hpp>
+
 #include "app/controller.hpp"
 #include "game/session.hpp"
+#include "physics/vec.hpp"
 
 namespace app_test {
 
@@ -14,6 +18,30 @@ inline game::Session new_session(rules::Game game = rules::Game::eight_ball,
     c.seed = seed;
     c.names = {"Ann", "Bob"};
     return game::Session(c);
+}
+
+/// An 8-ball session (Ann to shoot) with the balls at `balls` (0: the cue ball, on the table
+/// unless `cue_ball` says it is in hand), loaded through the save format; the balls not listed
+/// count as pocketed by Ann.
+inline game::Session session_at(const std::map<int, physics::Vec2>& balls,
+                                const std::string& cue_ball = "on_table",
+                                const std::string& shot = "normal") {
+    nlohmann::json doc = nlohmann::json::parse(new_session().to_json());
+    nlohmann::json on_table = nlohmann::json::array(), positions = nlohmann::json::object();
+    nlohmann::json pocketed = nlohmann::json::array();
+    for (int id = 1; id <= 15; ++id)
+        if (!balls.count(id)) pocketed.push_back({{"ball", id}, {"pocket", "SW"}, {"by", "A"}});
+    for (const auto& [id, p] : balls) {
+        if (id != 0) on_table.push_back(id);
+        positions[std::to_string(id)] = {p.x, p.y};
+    }
+    nlohmann::json& st = doc["state"];
+    st["shot"] = shot;
+    st["on_table"] = on_table;
+    st["positions"] = positions;
+    st["cue_ball"] = cue_ball;
+    doc["pocketed"] = pocketed;
+    return game::Session::from_json(doc.dump());
 }
 
 inline app::ControllerOptions options(std::string a = "human", std::string b = "human") {

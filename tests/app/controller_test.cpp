@@ -111,6 +111,21 @@ TEST(Controller, BallInHandRefusesAnIllegalSpotWithTheReason) {
     EXPECT_EQ(c.session().state().positions.at(0).x, 0.4);
 }
 
+// The reasons as a player says them: no metres, no "2R".
+TEST(Controller, BallInHandRefusalsAreInAPlayersWords) {
+    app::Controller c(app_test::session_at({{10, {0.4, 0.4}}, {8, {2.0, 0.6}}}, "in_hand"),
+                      options());
+    EXPECT_FALSE(c.move_cue_ball({0.4056, 0.4}));
+    EXPECT_EQ(c.refusal(), "The cue ball can't go on top of the 10.");
+    EXPECT_FALSE(c.move_cue_ball({0.01, 0.4}));
+    EXPECT_EQ(c.refusal(), "The cue ball must go on the cloth.");
+    app::Controller k(app_test::new_session(), options());
+    EXPECT_FALSE(k.move_cue_ball({1.2, 0.6}));
+    EXPECT_EQ(k.refusal(),
+              "The cue ball goes behind the head string (the line across the table) with ball in "
+              "hand in the kitchen.");
+}
+
 TEST(Controller, TheAimGuidePotsAStraightShotIntoThePocketItNames) {
     const physics::Table table = physics::build_table(*physics::table_preset("9ft"));
     const physics::Params params;
@@ -168,7 +183,7 @@ TEST(Controller, ClickingABallAndAPocketCallsThem) {
     c.click_table(ne.centre);
     EXPECT_EQ(c.call(), rules::Call::ball_in(ball, static_cast<int>(physics::PocketId::NE)));
     c.click_table(st.positions.at(8));  // the 8 is not callable on an open table
-    EXPECT_NE(c.refusal().find("not a ball you may call"), std::string::npos);
+    EXPECT_EQ(c.refusal(), "You may not call the 8 now.");
     EXPECT_EQ(c.call().ball, ball);
     c.clear_call();
     EXPECT_FALSE(c.call_is_manual());
@@ -213,6 +228,23 @@ TEST(Controller, RestartRacksTheNextGame) {
     EXPECT_TRUE(c.last_shot_words().empty());
 }
 
+// Restart before any shot of a game racks that game again: the break stays with its breaker.
+TEST(Controller, RestartBeforeAnyShotKeepsTheGameAndTheBreak) {
+    app::Controller c(new_session(), options());
+    const auto rack = c.session().state().positions;
+    c.move_cue_ball({0.4, 0.4});
+    c.restart();
+    EXPECT_EQ(c.session().game_number(), 0);
+    EXPECT_EQ(c.session().to_act(), rules::Player::A);
+    EXPECT_EQ(c.session().state().shot, rules::Shot::break_shot);
+    auto now = c.session().state().positions;
+    now.erase(0);
+    auto racked = rack;
+    racked.erase(0);
+    EXPECT_EQ(now, racked);                                 // the same rack
+    EXPECT_NE(c.session().state().positions.at(0).x, 0.4);  // the cue ball back at its spot
+}
+
 TEST(Controller, NothingHappensWhenItIsNotTheHumansTurn) {
     app::ControllerOptions o = options("random", "human");
     app::Controller c(new_session(), o);  // the random player breaks
@@ -245,6 +277,15 @@ TEST(Controller, AHintSetsTheAimOfTheStrongestAiWithoutStriking) {
     EXPECT_EQ(c.session().history().size(), shots);  // nothing was struck
     ASSERT_NE(c.preview(), nullptr);
     EXPECT_TRUE(c.call_is_manual());  // 8-ball after the break: the AI calls a ball or a safety
+    // The hint's spin and elevation are for this shot only: the next turn has the player's own.
+    const app::Aim hinted = c.aim();
+    EXPECT_TRUE(hinted.side != 0.0 || hinted.top != 0.0) << "this hint has no spin to carry";
+    c.strike();
+    run_until_idle(c);
+    ASSERT_TRUE(c.human_to_act());
+    EXPECT_EQ(c.aim().side, 0.0);
+    EXPECT_EQ(c.aim().top, 0.0);
+    EXPECT_EQ(c.aim().elevation_deg, 0.0);
 }
 
 }  // namespace

@@ -20,11 +20,43 @@ import sys
 import time
 
 
+# A saved 8-ball game (the session format of docs/game.md), Player 1 to shoot, with the balls at
+# `balls` ({id: (x, y)}; 0 the cue ball unless it is in hand); the others count as pocketed.
+def saved_game(balls, cue_ball="on_table", shot="normal"):
+    table = {"length": 2.54, "width": 1.27, "corner_mouth": 0.116, "side_mouth": 0.1285,
+             "corner_facing_deg": 142.0, "side_facing_deg": 104.0, "jaw_nose_radius": 0.005,
+             "cushion_height": 0.03629, "corner_shelf": 0.0286, "side_shelf": 0.0048, "jaw_depth": 0.0635,
+             "pockets": True}
+    params = {"ball_radius": 0.028575, "ball_mass": 0.17, "gravity": 9.81, "mu_slide": 0.2, "mu_roll": 0.01,
+              "spin_decel": 10.9, "e_ball": 0.95, "mu_ball": None, "e_cushion": 0.85, "mu_cushion": 0.2,
+              "cue_mass": 0.567, "cue_tip_e": 0.75, "cue_endmass": 0.015, "miscue_limit": 0.5}
+    options = {"call_shots": "all", "eight_on_break": "spot_or_rebreak", "foul_ball_in_hand": "anywhere",
+               "scratch_on_eight_loses": False, "groups_on_break": False, "rail_after_contact": True}
+    config = {"game": "8ball", "options": options, "table": table, "params": params,
+              "players": {"A": "Player 1", "B": "Player 2"}, "seed": 1, "first_breaker": "A", "keep_events": False}
+    state = {"shooter": "A", "breaker": "A", "shot": shot, "groups": None,
+             "on_table": sorted(b for b in balls if b != 0), "cue_ball": cue_ball, "call": None,
+             "fouls_in_row": {"A": 0, "B": 0}, "warned": {"A": False, "B": False},
+             "positions": {str(b): list(p) for b, p in sorted(balls.items())}}
+    pocketed = [{"ball": b, "pocket": "SW", "by": "A"} for b in range(1, 16) if b not in balls]
+    return {"format": "coolaaber-session", "version": 1, "config": config, "game_number": 0, "rack_number": 0,
+            "score": {"A": 0, "B": 0}, "state": state, "pending": None, "winner": None, "pocketed": pocketed,
+            "history": []}
+
+
 class Game:
-    def __init__(self, exe, work, *args):
+    def __init__(self, exe, work, *args, settings=None, save=None):
         self.work = work
         shutil.rmtree(work, ignore_errors=True)
         os.makedirs(work)
+        if settings is not None:
+            os.makedirs(os.path.join(work, "config", "coolaaber"))
+            with open(os.path.join(work, "config", "coolaaber", "settings.json"), "w") as f:
+                json.dump(dict({"format": "coolaaber-settings", "version": 1}, **settings), f)
+        if save is not None:
+            with open(os.path.join(work, "save.json"), "w") as f:
+                json.dump(save, f)
+            args = ("--load", os.path.join(work, "save.json"), *args)
         self.status_path = os.path.join(work, "status.json")
         env = dict(os.environ, XDG_CONFIG_HOME=os.path.join(work, "config"),
                    XDG_DATA_HOME=os.path.join(work, "data"), ALSOFT_DRIVERS="null")
@@ -223,7 +255,153 @@ def hinted_game(exe, work):
         g.close()
 
 
+def no_display(exe, work):
+    """Without a usable display the game says so in one line and exits 1 at once."""
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
+    base = dict(os.environ, XDG_CONFIG_HOME=os.path.join(work, "config"),
+                XDG_DATA_HOME=os.path.join(work, "data"), ALSOFT_DRIVERS="null")
+    base.pop("SDL_VIDEODRIVER", None)
+    unset = {k: v for k, v in base.items() if k not in ("DISPLAY", "WAYLAND_DISPLAY")}
+    cases = [("a display no server answers", dict(unset, DISPLAY=":77"), "cannot open a window on display :77: "),
+             ("an X server that refuses this user", dict(base, XAUTHORITY="/nonexistent"),
+              f"cannot open a window on display {os.environ.get('DISPLAY')}: "),
+             ("no display at all", unset, "cannot open a window: no display")]
+    for what, env, expected in cases:
+        start = time.time()
+        p = subprocess.run([exe, "--players", "ai:1,ai:1"], env=env, capture_output=True, text=True, timeout=20)
+        lines = p.stderr.splitlines()
+        check(p.returncode == 1 and time.time() - start < 5, f"{what}: exit 1 at once ({p.returncode})")
+        check(len(lines) == 1 and lines[0].startswith("coolaaber: " + expected),
+              f"{what}: one clear line: {p.stderr.strip()!r}")
+    check(not os.path.exists(os.path.join(work, "data", "coolaaber", "saved-game.json")), "no game was played unseen")
+
+
+def key(g, name, times=1):
+    g.xdo("key", "--window", g.window, "--repeat", str(times), "--delay", "8", name)
+
+
+def no_choice_after_scratch(exe, work):
+    """A scratch on a legal 8-ball break: the options would lead to the same position, so the
+    opponent is asked nothing and has ball in hand in the kitchen."""
+    save = saved_game({0: (0.45, 0.45), 1: (0.15, 0.15), 2: (2.0, 0.3), 8: (2.0, 0.6), 12: (2.0, 0.9)},
+                      cue_ball="in_hand_kitchen", shot="break")
+    g = Game(exe, work, settings={"power": 0.1}, save=save)
+    try:
+        s = g.wait(lambda s: s["phase"] == "shoot" and not s["busy"], 30, "the break")
+        turn_to(g, heading_to(s["cue_ball"], (0.15, 0.15)))
+        key(g, "space")
+        s = g.wait(lambda s: s["shots"] == 1 and not s["moving"] and not s["busy"], 30, "the balls to stop")
+        check("pocketed the 1" in s["last_shot"] and "cue ball went into a pocket" in s["last_shot"],
+              f"the 1 and the cue ball dropped: {s['last_shot']!r}")
+        check(s["phase"] != "choose" and s["to_act"] == "Player 2", f"Player 2 is asked nothing ({s['phase']})")
+        check(not any(k in s["widgets"] for k in ("Play the table as it lies", "Ball in hand in the kitchen")),
+              "no choice buttons")
+        check("Ball in hand: drag the cue ball behind the head string" in s["info"], f"info: {s['info']}")
+        g.screenshot("after-scratch.png")
+    finally:
+        g.close()
+
+
+def turn_to(g, heading):
+    """Turns the aim to `heading` (deg) with the arrow keys: 0.5 deg a press, then 0.05 deg with
+    Shift."""
+    def off():
+        return (heading - g.read()["heading_deg"] + 180) % 360 - 180
+    for step, mod in ((0.5, ""), (0.05, "shift+")):
+        delta = off()
+        if round(abs(delta) / step) > 0:
+            key(g, mod + ("Left" if delta > 0 else "Right"), round(abs(delta) / step))
+            time.sleep(0.3)
+    return g.wait(lambda s: abs((s["heading_deg"] - heading + 180) % 360 - 180) < 0.03, 10, f"the aim at {heading}")
+
+
+def heading_to(a, b):
+    import math
+    return math.degrees(math.atan2(b[1] - a[1], b[0] - a[0]))
+
+
+def kitchen_foul(exe, work):
+    """Ball in hand in the kitchen: the 3 lies in the kitchen. The aim starts elsewhere; aimed at
+    the 3, the guide turns red, nothing is called and the panel says why, before the strike."""
+    save = saved_game({3: (0.3, 0.9), 1: (1.5, 0.4), 8: (2.0, 0.6), 12: (1.8, 1.0)}, cue_ball="in_hand_kitchen")
+    g = Game(exe, work, save=save)
+    try:
+        s = g.wait(lambda s: s["phase"] == "shoot" and not s["busy"] and s["cue_ball"], 30, "ball in hand")
+        check(s["aim_foul"] == "" and not s["drawn"]["aim_illegal"], "the first aim is a legal one")
+        g.screenshot("kitchen-legal.png")
+        s = turn_to(g, heading_to(s["cue_ball"], (0.3, 0.9)))
+        s = g.wait(lambda s: s["drawn"]["aim_illegal"], 10, "the red guide")
+        check(s["aim_foul"].startswith("Foul as aimed: the 3 lies in the kitchen"), f"the reason: {s['aim_foul']!r}")
+        check(s["call"] is None and "Call: none (click a ball, then a pocket)" in s["info"], "nothing is called")
+        g.screenshot("kitchen-foul.png")
+    finally:
+        g.close()
+
+
+def guide_marks(exe, work):
+    """The practice guide straight into the NE pocket: the call (the 5 in the NE corner) and the
+    path's end in the pocket are marked; the guide level is picked in the panel and persists."""
+    obj, cue = (2.04, 0.77), (1.6, 0.33)  # on the diagonal into the NE corner
+    g = Game(exe, work, settings={"aim_guide": "practice", "power": 0.2},
+             save=saved_game({0: cue, 5: obj, 8: (0.5, 0.3)}))
+    try:
+        s = g.wait(lambda s: s["phase"] == "shoot" and not s["busy"], 30, "the shot")
+        s = turn_to(g, heading_to(cue, obj))
+        s = g.wait(lambda s: s["call"] is not None, 10, "the call")
+        check(s["call"] == {"ball": 5, "pocket": 5} and s["guide_end"] == "pocket",
+              f"the 5 is called in the NE corner, where the guide drops it ({s['call']}, {s['guide_end']})")
+        check(s["drawn"]["marks"] == 3, f"the called ball, pocket and the path's end are marked ({s['drawn']['marks']})")
+        practice = g.screenshot("guide-practice.png")
+        g.click_widget("Aim guide level")
+        g.click_widget("Off")
+        s = g.wait(lambda s: s["aim_guide_level"] == "off", 10, "the guide off")
+        check(s["drawn"]["marks"] == 2, "with the guide off the call is still marked")
+        off = g.screenshot("guide-off.png")
+        check(differing_pixels(practice, off) > 200, "the guide is gone from the table")
+        settings = json.load(open(os.path.join(work, "config", "coolaaber", "settings.json")))
+        check(settings["aim_guide"] == "off", "the level is saved")
+    finally:
+        g.close()
+
+
+def resize(exe, work):
+    """The panel is laid out for the window: every control stays in view and the table keeps
+    most of the width, from 1280x720 down to 640x480; the Controls help fits too."""
+    g = Game(exe, work, "--game", "8ball", "--seed", "2")
+    controls = ["Sound", "Change View", "Restart", "Exit", "Aim guide level", "Strike", "Hint", "New Game...",
+                "Controls"]
+    try:
+        for w, h in ((1280, 720), (800, 600), (640, 480), (1280, 720)):
+            g.xdo("windowsize", "--sync", g.window, str(w), str(h))
+            s = g.wait(lambda s: s["window"] == [w, h] and all(k in s["widgets"] for k in controls), 10,
+                       f"the window at {w}x{h}")
+            time.sleep(0.3)
+            s = g.wait(lambda s: True, 1, "the status")
+            inside = [k for k in controls
+                      if 0 <= s["widgets"][k][0] and s["widgets"][k][2] <= w and 0 <= s["widgets"][k][1]
+                      and s["widgets"][k][3] <= h]
+            check(inside == controls, f"{w}x{h}: every control in view ({sorted(set(controls) - set(inside))} not)")
+            check(s["panel_width"] <= 0.4 * w and (w < 1280 or s["panel_width"] == 300),
+                  f"{w}x{h}: the panel is {s['panel_width']} px, the table {w - s['panel_width']} px")
+            g.screenshot(f"window-{w}x{h}.png")
+            if w == 640:
+                g.click_widget("Controls")
+                c = g.wait(lambda s: "Close" in s["widgets"], 10, "the Controls help")["widgets"]["Close"]
+                check(c[3] <= h, f"the Controls help fits in a {w}x{h} window (its Close at y {c[3]})")
+                g.screenshot("controls-help.png")
+                key(g, "space")
+                time.sleep(0.5)
+                check(g.read()["shots"] == 0 and not g.read()["moving"], "Space does not strike while a dialog is open")
+                g.click_widget("Close")
+                g.wait(lambda s: "Close" not in s["widgets"], 10, "the help closed")
+    finally:
+        g.close()
+
+
 if __name__ == "__main__":
     test, exe, work = sys.argv[1], sys.argv[2], sys.argv[3]
-    {"controls": controls, "game": whole_game, "hinted": hinted_game}[test](exe, work)
+    {"controls": controls, "game": whole_game, "hinted": hinted_game, "display": no_display,
+     "choice": no_choice_after_scratch, "kitchen": kitchen_foul, "guide": guide_marks,
+     "resize": resize}[test](exe, work)
     print("passed")

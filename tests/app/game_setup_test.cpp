@@ -124,4 +124,21 @@ TEST(GameSetup, BadFilesThatCannotBeSetAsideAreNeverWrittenOver) {
     EXPECT_EQ(contents(save), "{ not a saved game");
 }
 
+// A computer seat is called what it is, unless the player named it.
+TEST(GameSetup, ComputerSeatsAreCalledByWhatTheyAre) {
+    app::Settings s;
+    s.players = {"human", "ai:3"};
+    EXPECT_EQ(app::new_game_config(s, 1).names,
+              (std::array<std::string, 2>{"Player 1", "Computer (level 3)"}));
+    s.players = {"random", "human"};
+    EXPECT_EQ(app::new_game_config(s, 1).names,
+              (std::array<std::string, 2>{"Computer (random)", "Player 2"}));
+    s.players = {"ai:5", "ai:5"};
+    EXPECT_EQ(app::new_game_config(s, 1).names,
+              (std::array<std::string, 2>{"Computer 1 (level 5)", "Computer 2 (level 5)"}));
+    s.names = {"Deep Blue", "Player 2"};
+    EXPECT_EQ(app::new_game_config(s, 1).names,
+              (std::array<std::string, 2>{"Deep Blue", "Computer 2 (level 5)"}));
+}
+
 }  // namespace

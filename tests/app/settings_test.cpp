@@ -33,10 +33,40 @@ TEST(Settings, RoundTripThroughTheFile) {
     s.house_rules.call_shots = rules::CallShots::eight_only;
     s.window_width = 1600;
     s.fullscreen = true;
+    s.aim_guide = app::AimGuide::practice;
     app::save_settings(dir / "sub" / "settings.json", s);
     const app::LoadedSettings back = app::load_settings(dir / "sub" / "settings.json");
     EXPECT_FALSE(back.message.has_value());
     EXPECT_EQ(back.settings, s);
+    EXPECT_NE(read(dir / "sub" / "settings.json").find("\"aim_guide\": \"practice\""),
+              std::string::npos);
+}
+
+// Settings written before the guide had levels still load: the key missing gives the default
+// level, true (the guide on) the default level, false off.
+TEST(Settings, TheAimGuideLevelReadsOldFiles) {
+    const std::string head = "{\"format\": \"coolaaber-settings\", \"version\": 1";
+    EXPECT_EQ(app::Settings{}.aim_guide, app::AimGuide::lines);
+    EXPECT_EQ(app::settings_from_json(head + "}").aim_guide, app::AimGuide::lines);
+    EXPECT_EQ(app::settings_from_json(head + ", \"aim_guide\": true}").aim_guide,
+              app::AimGuide::lines);
+    EXPECT_EQ(app::settings_from_json(head + ", \"aim_guide\": false}").aim_guide,
+              app::AimGuide::off);
+    for (app::AimGuide g : {app::AimGuide::off, app::AimGuide::ghost, app::AimGuide::lines,
+                            app::AimGuide::practice}) {
+        app::Settings s;
+        s.aim_guide = g;
+        EXPECT_EQ(app::settings_from_json(app::settings_to_json(s)).aim_guide, g);
+    }
+    try {
+        (void)app::settings_from_json(head + ", \"aim_guide\": \"full\"}");
+        ADD_FAILURE() << "an unknown level was read";
+    } catch (const game::LoadError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "settings.aim_guide: unknown aim guide \"full\" (expected \"off\", \"ghost\", "
+                  "\"lines\" or \"practice\")");
+    }
+    EXPECT_THROW((void)app::settings_from_json(head + ", \"aim_guide\": 2}"), game::LoadError);
 }
 
 TEST(Settings, AMissingFileGivesTheDefaultsSilently) {

@@ -502,6 +502,58 @@ TEST(Session, StalemateReracksForTheOriginalBreaker) {
     expect_consistent(s);
 }
 
+// A break with the 1 in front of the SW corner pocket and the cue ball straight behind it: with
+// follow, both drop. A legal break (a ball down) and a scratch.
+TableState scratch_on_a_legal_break() {
+    TableState t;
+    t.shot = "break";
+    t.cue_ball = "in_hand_kitchen";
+    t.balls = {{1, {0.15, 0.15}}, {2, {2.0, 0.3}}, {8, {2.0, 0.6}}, {12, {2.0, 0.9}}};
+    return t;
+}
+
+TEST(Session, NoChoiceWhereTheOptionsLeadToTheSamePosition) {
+    Session s = session_with(config_for(Game::eight_ball), scratch_on_a_legal_break());
+    const physics::Vec2 cue{0.45, 0.45};
+    s.place_cue_ball(cue);
+    std::optional<physics::Stroke> k =
+        find_stroke(s, fan(heading(cue, {0.15, 0.15}), {0.0}, {1.0, 1.5, 2.0}, {0.0, 0.4}),
+                    [](const ShotRecord& r) { return down(r, 1) && down(r, 0); });
+    ASSERT_TRUE(k) << "no stroke pots the 1 and follows it in";
+    const ShotRecord& r = s.play(*k);
+    EXPECT_EQ(r.verdict.break_result, rules::BreakResult::legal);
+    ASSERT_TRUE(r.verdict.has(rules::Foul::scratch));
+    // The rules offer "the table as it lies" or "ball in hand in the kitchen": with the cue
+    // ball pocketed both are ball in hand in the kitchen for Bob, so nothing is asked.
+    ASSERT_TRUE(r.verdict.choice);
+    EXPECT_EQ(r.verdict.choice->options, (std::vector{rules::ChoiceOption::accept_table,
+                                                      rules::ChoiceOption::kitchen_ball_in_hand}));
+    EXPECT_EQ(s.phase(), Phase::place_cue_ball);
+    EXPECT_FALSE(s.choice());
+    EXPECT_EQ(s.to_act(), B);
+    EXPECT_EQ(s.ball_in_hand(), rules::BallInHand::kitchen);
+    EXPECT_EQ(s.history().back().choice, rules::ChoiceOption::accept_table);
+    expect_consistent(s);
+    // The session saves and loads as it is.
+    EXPECT_EQ(Session::from_json(s.to_json()).to_json(), s.to_json());
+}
+
+TEST(Session, RestartBeforeTheFirstShotRacksTheSameGameAgain) {
+    Session s(config_for(Game::eight_ball));
+    const auto rack = s.state().positions;
+    s.place_cue_ball(break_spot);
+    s.restart();
+    EXPECT_EQ(s.game_number(), 0);
+    EXPECT_EQ(s.to_act(), A);  // the break is not given away
+    EXPECT_EQ(s.phase(), Phase::place_cue_ball);
+    EXPECT_EQ(s.state().positions, rack);
+    s.place_cue_ball(break_spot);
+    s.play({8.0, 0.0});
+    s.restart();  // after a shot: the next game, the other breaker
+    EXPECT_EQ(s.game_number(), 1);
+    EXPECT_EQ(s.to_act(), B);
+}
+
 TEST(Session, StrokesAreChecked) {
     TableState t = after_break();
     Session s = session_with(config_for(Game::nine_ball), t);
@@ -522,7 +574,7 @@ void replay(Session& s, const std::vector<ShotRecord>& record, std::size_t from)
         s.set_call(r.before.call);
         if (r.push_out()) s.set_push_out(true);
         s.play(r.stroke);
-        if (r.choice) s.choose(*r.choice);
+        if (r.choice && s.phase() == Phase::choose) s.choose(*r.choice);
     }
 }
 
