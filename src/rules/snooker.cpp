@@ -48,13 +48,14 @@ int value_on(const SnookerState& s) {
     return s.reds() > 0 ? 1 : snooker_value(lowest_colour(s));
 }
 
-/// The time of the cue ball's first contact with a ball, and of the strike.
+/// Whether the cue ball met a ball within the tip's contact time after the strike (events
+/// without times say nothing: a frozen ball is the touching-ball rule's).
 bool pushed(std::span<const physics::Event> events) {
     double strike = -1.0;
     for (const physics::Event& e : events) {
         if (e.type == physics::EventType::strike) strike = e.time;
         if (e.type == physics::EventType::ball_ball && e.involves(ball::cue))
-            return strike >= 0.0 && e.time - strike < kTipContactTime;
+            return strike >= 0.0 && e.time > strike && e.time - strike < kTipContactTime;
     }
     return false;
 }
@@ -110,7 +111,7 @@ std::vector<SnookerFoul> find_fouls(const SnookerState& s, const Stroke& k,
 }
 
 /// Four points, or the value of the ball on, the ball first hit, or a ball potted or driven
-/// off the table, whichever is highest (Section 3, 12); seven for reds in successive strokes.
+/// off the table, whichever is highest (S3 R10, Penalties); seven for reds in successive strokes.
 int foul_value(const SnookerState& s, const Stroke& k) {
     int v = std::max(4, value_on(s));
     if (k.first && k.first_on.count(*k.first) == 0) v = std::max(v, snooker_value(*k.first));
@@ -252,7 +253,8 @@ void judge_legal(SnookerVerdict& v, const SnookerTable& t, const SnookerState& s
             colours.push_back(b);
         } else if (is_red(b)) {
             points += 1;
-        } else if (free) {  // scores as the ball on (Section 3, 10(b)); back on its spot
+        } else if (free) {  // scores as the ball on (S3 R12, Snookered after a Foul); back on its
+                            // spot
             if (k.potted.size() == 1 || s.reds() > 0) points += s.reds() > 0 ? 1 : value;
             colours.push_back(b);
         } else {

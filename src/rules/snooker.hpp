@@ -17,7 +17,7 @@
 namespace rules {
 
 struct SnookerOptions {
-    bool miss_rule = true;  ///< WPBSA Section 3, 14; off: a casual game, no miss is called
+    bool miss_rule = true;  ///< WPBSA S3 R14; off: a casual game, no miss is called
     friend bool operator==(const SnookerOptions&, const SnookerOptions&) = default;
 };
 
@@ -89,7 +89,7 @@ struct SnookerVerdict {
 
 /// The balls on for a state (before any nomination): reds, the colours, or the lowest colour.
 BallOn ball_on(const SnookerState& s);
-/// The points left on the table for the striker (WPBSA: reds 8 each with their colour, …).
+/// The points left on the table for the striker (8 a red with the black, and the colours).
 int points_remaining(const SnookerState& s);
 
 /// Judges one stroke. `s` must be consistent (the CLI checks it).

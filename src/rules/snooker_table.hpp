@@ -1,6 +1,6 @@
-// The geometry the snooker rules ask about: re-spotting colours (WPBSA Section 3, 7), whether
-// the cue ball is snookered (Section 2, 17) or has a clear path to a ball on (Section 3, 14),
-// and a touching ball (Section 3, 13). Private to the rules module.
+// The geometry the snooker rules ask about: re-spotting colours (WPBSA S3 'Spotting Colours'),
+// whether the cue ball is snookered (S2 definitions) or has a clear path to a ball on (S3 R14), and
+// a touching ball (S3 'Touching Ball'). Private to the rules module.
 #pragma once
 
 #include <map>
@@ -29,9 +29,9 @@ std::vector<Respot> respot_colours(std::vector<int> colours, Positions& position
 /// Whether the cue ball can hit the ball `target` in a straight line at the edge given by
 /// `side` (−1, +1; 0 the full ball, fractions between) unobstructed by the balls not in `on`.
 bool can_hit(const Positions& pos, int target, double side, const std::set<int>& on, double R);
-/// Snookered: no ball on can be hit at both extreme edges (Section 2, 17).
+/// Snookered: no ball on can be hit at both extreme edges (S2 definitions).
 bool is_snookered(const Positions& pos, const std::set<int>& on, double R);
-/// A clear path: some part of some ball on can be hit in a straight line (Section 3, 14(c)).
+/// A clear path: some part of some ball on can be hit in a straight line (S3 R14).
 bool has_clear_path(const Positions& pos, const std::set<int>& on, double R);
 /// The ball the cue ball rests against, if any (within 1 µm of touching).
 std::optional<int> touching_ball(const Positions& pos, double R);

@@ -38,7 +38,9 @@ CaromStroke read_stroke(std::span<const physics::Event> events) {
             if (k.balls_hit.size() < 2) ++k.cushions_before_second;
         } else if (e.type == EventType::ball_ball && e.involves(cue)) {
             const int other = e.ball(0) == cue ? e.ball(1) : e.ball(0);
-            if (k.balls_hit.empty() && e.time - strike_time < kTipContactTime) k.pushed = true;
+            if (k.balls_hit.empty() && e.time > strike_time &&
+                e.time - strike_time < kTipContactTime)
+                k.pushed = true;
             if (std::find(k.balls_hit.begin(), k.balls_hit.end(), other) == k.balls_hit.end())
                 k.balls_hit.push_back(other);
         } else if (e.type == EventType::off_table || e.type == EventType::pocket) {
@@ -86,6 +88,7 @@ void end_inning(CaromVerdict& v, const CaromState& s) {
     if (s.equalizing) {
         v.game_over = true;
         v.winner = s.starter;
+        v.next_shooter.reset();
         return;
     }
     n.shooter = other(s.shooter);

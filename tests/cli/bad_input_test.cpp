@@ -154,8 +154,10 @@ const std::vector<BadCase> kCases = {
         {"id":6,"pos":[0.7,0.1]},{"id":7,"pos":[0.8,0.1]},{"id":8,"pos":[0.9,0.1]},
         {"id":9,"pos":[1.0,0.1]},{"id":10,"pos":[1.1,0.1]},{"id":11,"pos":[1.2,0.1]},
         {"id":12,"pos":[1.3,0.1]},{"id":13,"pos":[1.4,0.1]},{"id":14,"pos":[1.5,0.1]},
-        {"id":15,"pos":[1.6,0.1]},{"id":15,"pos":[1.7,0.1]}]})",
-     "balls", "at most 16"},
+        {"id":15,"pos":[1.6,0.1]},{"id":16,"pos":[1.7,0.1]},{"id":17,"pos":[1.8,0.1]},
+        {"id":18,"pos":[1.9,0.1]},{"id":19,"pos":[2.0,0.1]},{"id":20,"pos":[2.1,0.1]},
+        {"id":21,"pos":[2.2,0.1]},{"id":21,"pos":[2.3,0.1]}]})",
+     "balls", "at most 22"},
     {"no_balls", R"({"strike": {"speed": 1}})", "balls", "missing"},
     {"balls_and_rack", R"({"balls": [], "rack": {"game": "8ball"}})", "rack", "not both"},
     // Strike on a missing or moving cue ball.
