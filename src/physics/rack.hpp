@@ -20,7 +20,7 @@ enum class RackType { eight_ball, nine_ball, snooker, three_cushion };
 std::vector<BallState> rack(RackType type, const Table& table, const Params& params,
                             std::uint64_t seed, std::optional<Vec2> cue_pos = std::nullopt);
 
-/// The snooker set-up (WPBSA Rules, Section 2, 1): the colours on their spots, the 15 reds
+/// The snooker set-up (WPBSA S3 'Position of Balls'): the colours on their spots, the 15 reds
 /// (ids 1–15) in a tight triangle whose apex is on the long string 1 mm beyond touching the
 /// pink, rows toward the top cushion; the cue ball at `cue_pos` (default: in the D, on the
 /// baulk line halfway between the brown and yellow spots).

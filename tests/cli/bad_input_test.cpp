@@ -133,7 +133,7 @@ const std::vector<BadCase> kCases = {
     {"ball_too_fast", R"({"balls": [{"id": 1, "pos": [1, 0.6], "vel": [300, 0]}]})", "balls[0].vel",
      "too fast"},
     // Balls.
-    {"unknown_ball_id", R"({"balls": [{"id": 16, "pos": [1, 0.6]}]})", "balls[0].id",
+    {"unknown_ball_id", R"({"balls": [{"id": 22, "pos": [1, 0.6]}]})", "balls[0].id",
      "out of range"},
     {"negative_ball_id", R"({"balls": [{"id": -1, "pos": [1, 0.6]}]})", "balls[0].id",
      "out of range"},
@@ -171,7 +171,7 @@ const std::vector<BadCase> kCases = {
         "strike": {"speed": 1}})",
      "balls[1].spin", "at rest"},
     // Racks.
-    {"rack_unknown_game", R"({"rack": {"game": "snooker"}})", "rack.game", "unknown value"},
+    {"rack_unknown_game", R"({"rack": {"game": "bowls"}})", "rack.game", "unknown value"},
     {"rack_negative_seed", R"({"rack": {"game": "9ball", "seed": -3}})", "rack.seed",
      "out of range"},
     {"rack_cue_on_the_apex", R"({"rack": {"game": "8ball", "cue_pos": [1.905, 0.635]}})",
