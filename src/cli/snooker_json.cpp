@@ -86,10 +86,13 @@ rules::SnookerState read_state(const JsonIn& in, const physics::Table& table,
     if (auto v = in.find("break")) s.break_points = static_cast<int>(v->integer_in(0, kMaxScore));
     check_state(in, s);
     if (auto v = in.find("positions")) {
-        const BallSet set{ball::black, [&](int id) {
-                              return id == 0 ? s.cue_ball == rules::CueBall::on_table : s.has(id);
-                          }};
+        const BallSet set{ball::black, [&](int id) { return id == 0 || s.has(id); }};
         s.positions = read_positions(*v, set, table, params);
+        const auto cue = s.positions.find(0);
+        // A cue ball in hand is judged where the striker placed it: in the D.
+        if (cue != s.positions.end() && s.cue_ball == rules::CueBall::in_hand &&
+            !physics::snooker_markings(table).in_d(cue->second))
+            v->at("0").fail("a cue ball in hand is placed in the D");
     }
     return s;
 }

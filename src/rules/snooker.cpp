@@ -81,8 +81,8 @@ Stroke read_stroke(const SnookerState& s, std::span<const physics::Event> events
     nominated_state.nominated = k.nominated;
     k.on = balls_on(nominated_state);
     k.first_on = s.free_ball && s.nominated ? std::set<int>{*s.nominated} : k.on;
-    if (s.cue_ball == CueBall::on_table)
-        if (auto t = touching_ball(s.positions, R); t && k.on.count(*t) != 0) k.touching = t;
+    // A cue ball in hand counts where the striker placed it (its position, when given).
+    if (auto t = touching_ball(s.positions, R); t && k.on.count(*t) != 0) k.touching = t;
     if (!k.first && k.touching) k.first = k.touching;
     for (const PocketedBall& p : k.facts.pocketed) k.potted.push_back(p.ball);
     return k;
@@ -227,7 +227,6 @@ void judge_foul(SnookerVerdict& v, const SnookerOptions& o, const SnookerTable& 
                         needs_snookers(n, striker) || needs_snookers(n, opponent);
     v.miss = o.miss_rule &&
              (v.has(SnookerFoul::no_contact) || v.has(SnookerFoul::wrong_ball_first)) && !needed &&
-             s.cue_ball == CueBall::on_table &&
              has_clear_path(s.positions, k.first_on, t.ball_radius);
     v.may_ask_to_play_again = true;
     const std::set<int> next_on = balls_on(n);

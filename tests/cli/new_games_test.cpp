@@ -172,6 +172,13 @@ std::vector<Bad> bad_cases() {
         },
         "state.positions.1");
     add(
+        "cue_in_hand_outside_the_d", s,
+        [](json& d) {
+            d["state"]["cue_ball"] = "in_hand";
+            d["state"]["positions"]["0"] = {1.5, 0.8};
+        },
+        "state.positions.0");
+    add(
         "event_ball_not_on_table", s,
         [](json& d) {
             d["events"][1] = ev("ball_ball", {0, 5});
