@@ -20,9 +20,10 @@ namespace {
 namespace ball = physics::snooker_ball;
 using nlohmann::ordered_json;
 
-constexpr std::array<std::string_view, 7> kFoulNames{
-    "in_off",         "cue_ball_off_table", "no_contact", "wrong_ball_first", "ball_not_on_potted",
-    "ball_off_table", "push_stroke"};
+constexpr std::array<std::string_view, 8> kFoulNames{
+    "in_off",           "cue_ball_off_table",    "no_contact",
+    "wrong_ball_first", "ball_not_on_potted",    "ball_off_table",
+    "push_stroke",      "snookered_by_free_ball"};
 constexpr std::array<std::string_view, 8> kBallOnNames{"red",   "colour", "yellow", "green",
                                                        "brown", "blue",   "pink",   "black"};
 constexpr int kMaxScore = 10000;
@@ -84,6 +85,7 @@ rules::SnookerState read_state(const JsonIn& in, const physics::Table& table,
     if (auto v = in.find("respotted_black")) s.respotted_black = v->boolean();
     if (auto v = in.find("scores")) s.scores = read_pair(*v, 0, kMaxScore);
     if (auto v = in.find("break")) s.break_points = static_cast<int>(v->integer_in(0, kMaxScore));
+    if (auto v = in.find("misses")) s.misses = static_cast<int>(v->integer_in(0, 2));
     check_state(in, s);
     if (auto v = in.find("positions")) {
         const BallSet set{ball::black, [&](int id) { return id == 0 || s.has(id); }};
@@ -108,6 +110,7 @@ ordered_json state_to_json(const rules::SnookerState& s) {
     j["respotted_black"] = s.respotted_black;
     j["scores"] = pair_to_json(s.scores);
     j["break"] = s.break_points;
+    j["misses"] = s.misses;
     j["positions"] = positions_to_json(s.positions);
     return j;
 }
@@ -136,6 +139,7 @@ ordered_json verdict_to_json(const rules::SnookerVerdict& v) {
     j["free_ball"] = v.free_ball;
     j["touching_ball"] = v.touching_ball ? ordered_json(*v.touching_ball) : ordered_json(nullptr);
     j["miss"] = v.miss;
+    j["misses"] = v.misses;
     j["may_ask_to_play_again"] = v.may_ask_to_play_again;
     j["frame_over"] = v.frame_over;
     j["winner"] = player_or_null(v.winner);

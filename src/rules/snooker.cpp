@@ -139,6 +139,7 @@ SnookerState table_after(const SnookerState& s, const Stroke& k,
     n.nominated.reset();
     n.free_ball = false;
     n.colour_on = false;
+    n.misses = 0;
     return n;
 }
 
@@ -199,6 +200,46 @@ int points_remaining(const SnookerState& s) {
 
 namespace {
 
+bool placed(const Positions& pos, const std::set<int>& on) {
+    return pos.count(0) != 0 &&
+           std::all_of(on.begin(), on.end(), [&](int b) { return pos.count(b) != 0; });
+}
+
+/// Foul and a miss (S3 R14): the ball on not hit first with a clear path to one, unless either
+/// player needed snookers. A third miss in a row with a ball on visible at both edges, the
+/// balls replaced each time, gives the frame to the opponent.
+void call_miss(SnookerVerdict& v, const SnookerOptions& o, const SnookerTable& t,
+               const SnookerState& s, const Stroke& k) {
+    const Player striker = s.shooter, opponent = other(s.shooter);
+    const SnookerState& n = v.state;
+    const bool needed = needs_snookers(s, striker) || needs_snookers(s, opponent) ||
+                        needs_snookers(n, striker) || needs_snookers(n, opponent);
+    v.miss = o.miss_rule &&
+             (v.has(SnookerFoul::no_contact) || v.has(SnookerFoul::wrong_ball_first)) && !needed &&
+             has_clear_path(s.positions, k.first_on, t.ball_radius);
+    const bool full_ball = v.miss && !is_snookered(s.positions, k.first_on, t.ball_radius);
+    v.misses = full_ball ? s.misses + 1 : 0;
+    if (v.misses >= 3) {
+        v.frame_over = true;
+        v.winner = opponent;
+        v.next_shooter.reset();
+        v.may_ask_to_play_again = false;
+    }
+}
+
+/// A free ball must not be left snookering the incoming striker on every ball on (S3 R12),
+/// except when only the pink and black remain; judged when the turn passes (nothing potted).
+bool snookered_by_free_ball(const SnookerState& s, const Stroke& k, const SnookerState& after,
+                            double R) {
+    if (!s.free_ball || !s.nominated || !k.potted.empty() || !after.has(*s.nominated)) return false;
+    if (after.on_table == std::set<int>{ball::pink, ball::black}) return false;
+    const std::set<int> on = balls_on(after);
+    if (!placed(after.positions, on) || after.positions.count(*s.nominated) == 0) return false;
+    Positions without = after.positions;
+    without.erase(*s.nominated);
+    return is_snookered(after.positions, on, R) && !is_snookered(without, on, R);
+}
+
 /// After a foul: the points to the opponent, the colours back, the opponent to play (or the
 /// frame over on the last black), a free ball if he is snookered, a miss if one is called.
 void judge_foul(SnookerVerdict& v, const SnookerOptions& o, const SnookerTable& t,
@@ -223,18 +264,12 @@ void judge_foul(SnookerVerdict& v, const SnookerOptions& o, const SnookerTable& 
         return;
     }
     respot(v, colours, t);
-    const bool needed = needs_snookers(s, striker) || needs_snookers(s, opponent) ||
-                        needs_snookers(n, striker) || needs_snookers(n, opponent);
-    v.miss = o.miss_rule &&
-             (v.has(SnookerFoul::no_contact) || v.has(SnookerFoul::wrong_ball_first)) && !needed &&
-             has_clear_path(s.positions, k.first_on, t.ball_radius);
     v.may_ask_to_play_again = true;
+    call_miss(v, o, t, s, k);
+    if (v.frame_over) return;
     const std::set<int> next_on = balls_on(n);
-    const bool placed =
-        n.positions.count(0) != 0 && std::all_of(next_on.begin(), next_on.end(),
-                                                 [&](int b) { return n.positions.count(b) != 0; });
     // In hand in the D the striker chooses where the cue ball goes: no free ball (docs/rules.md).
-    if (n.cue_ball == CueBall::on_table && placed)
+    if (n.cue_ball == CueBall::on_table && placed(n.positions, next_on))
         v.free_ball = is_snookered(n.positions, next_on, t.ball_radius);
 }
 
@@ -287,8 +322,10 @@ SnookerVerdict judge_snooker(const SnookerOptions& options, const SnookerTable& 
     v.fouls = find_fouls(s, k, events);
     if (std::find(v.fouls.begin(), v.fouls.end(), SnookerFoul::no_contact) != v.fouls.end())
         std::erase_if(v.fouls, [](SnookerFoul f) { return f == SnookerFoul::wrong_ball_first; });
-    v.foul = !v.fouls.empty();
     v.state = table_after(s, k, events);
+    if (snookered_by_free_ball(s, k, v.state, table.ball_radius))
+        v.fouls.push_back(SnookerFoul::snookered_by_free_ball);
+    v.foul = !v.fouls.empty();
     if (v.foul)
         judge_foul(v, options, table, s, k);
     else
@@ -314,7 +351,10 @@ SnookerState resolve_after_foul(const SnookerVerdict& v, const SnookerState& bef
     n.shooter = before.shooter;
     n.break_points = 0;
     n.free_ball = false;
-    if (choice == AfterFoul::replace) n.colour_on = before.colour_on;
+    if (choice == AfterFoul::replace) {
+        n.colour_on = before.colour_on;
+        n.misses = v.misses;  // the balls replaced: the misses in a row go on counting
+    }
     return n;
 }
 

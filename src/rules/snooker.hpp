@@ -38,8 +38,9 @@ struct SnookerState {
     std::optional<int> nominated;  ///< the nominated colour, or the free ball
     bool free_ball = false;        ///< this shot is a free ball: `nominated` acts as the ball on
     bool respotted_black = false;  ///< the frame is decided on a re-spotted black
-    std::array<int, 2> scores{0, 0};         ///< by index(Player)
-    int break_points = 0;                    ///< the shooter's points in this visit
+    std::array<int, 2> scores{0, 0};  ///< by index(Player)
+    int break_points = 0;             ///< the shooter's points in this visit
+    int misses = 0;  ///< misses in a row with a ball on in full view, the balls replaced (0–2)
     std::map<int, physics::Vec2> positions;  ///< ball centres (unit: m); key 0 the cue ball
 
     int score(Player p) const { return scores[index(p)]; }
@@ -49,13 +50,14 @@ struct SnookerState {
 
 /// The fouls, in their canonical order (docs/rules.md, "Snooker").
 enum class SnookerFoul {
-    in_off,              ///< the cue ball was pocketed
-    cue_ball_off_table,  ///< the cue ball left the table
-    no_contact,          ///< the cue ball hit no ball (stands alone)
-    wrong_ball_first,    ///< the first ball hit was not on
-    ball_not_on_potted,  ///< a ball not on was potted (two balls where not allowed too)
-    ball_off_table,      ///< an object ball left the table
-    push_stroke,         ///< the cue ball met a ball while the tip was still on it
+    in_off,                  ///< the cue ball was pocketed
+    cue_ball_off_table,      ///< the cue ball left the table
+    no_contact,              ///< the cue ball hit no ball (stands alone)
+    wrong_ball_first,        ///< the first ball hit was not on
+    ball_not_on_potted,      ///< a ball not on was potted (two balls where not allowed too)
+    ball_off_table,          ///< an object ball left the table
+    push_stroke,             ///< the cue ball met a ball while the tip was still on it
+    snookered_by_free_ball,  ///< the free ball left the incoming striker snookered (S3 R12)
 };
 
 /// A colour put back after the shot, and where: its own spot, another colour's spot, or as
@@ -78,6 +80,7 @@ struct SnookerVerdict {
     bool free_ball = false;            ///< the next striker is snookered after a foul
     std::optional<int> touching_ball;  ///< the cue ball rests touching this ball
     bool miss = false;                 ///< foul and a miss
+    int misses = 0;  ///< the striker's misses in a row with a ball on in full view (3: frame lost)
     bool may_ask_to_play_again = false;
     bool frame_over = false;
     std::optional<Player> winner;

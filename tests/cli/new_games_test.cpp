@@ -51,11 +51,11 @@ TEST(SnookerJudge, ContractExample) {
     const nlohmann::ordered_json out = cli::judge_command(snooker_doc());
     std::vector<std::string> keys;
     for (const auto& [k, v] : out.items()) keys.push_back(k);
-    EXPECT_EQ(keys,
-              (std::vector<std::string>{
-                  "foul", "fouls", "foul_points", "points_scored", "next_shooter", "respotted",
-                  "ball_on", "free_ball", "touching_ball", "miss", "may_ask_to_play_again",
-                  "frame_over", "winner", "respotted_black", "scores", "state"}));
+    EXPECT_EQ(keys, (std::vector<std::string>{"foul", "fouls", "foul_points", "points_scored",
+                                              "next_shooter", "respotted", "ball_on", "free_ball",
+                                              "touching_ball", "miss", "misses",
+                                              "may_ask_to_play_again", "frame_over", "winner",
+                                              "respotted_black", "scores", "state"}));
     EXPECT_EQ(out["foul"], false);
     EXPECT_EQ(out["points_scored"], 1);
     EXPECT_EQ(out["next_shooter"], "A");

@@ -990,6 +990,59 @@ TEST(SnookerMiss, ReplaceRestoresTheBallsForTheOffender) {  // S3 R14 (replace)
     EXPECT_EQ(play_again.positions.at(0), (physics::Vec2{2.0, 0.9}));
 }
 
+TEST(SnookerMiss, ThirdMissInFullViewLosesTheFrame) {  // S3 R14 (three misses)
+    SnookerState s = open_position();
+    const SnookerVerdict first =
+        judge_snooker({}, kTable, s, std::vector<Event>{strike(), hit(0, Y)});
+    ASSERT_TRUE(first.miss);
+    EXPECT_EQ(first.misses, 1);
+    EXPECT_EQ(resolve_after_foul(first, s, AfterFoul::replace).misses, 1);
+    EXPECT_EQ(resolve_after_foul(first, s, AfterFoul::play_again).misses, 0);
+    EXPECT_EQ(first.state.misses, 0);  // the opponent plays: a new count
+    s.misses = 2;
+    const SnookerVerdict third =
+        judge_snooker({}, kTable, s, std::vector<Event>{strike(), hit(0, Y)});
+    EXPECT_EQ(third.misses, 3);
+    EXPECT_TRUE(third.frame_over);
+    EXPECT_EQ(third.winner, B);
+    EXPECT_FALSE(third.may_ask_to_play_again);
+}
+
+TEST(SnookerMiss, NoCountWithoutAFullView) {  // S3 R14 (three misses: a full ball on)
+    SnookerState s = open_position();
+    // The blue 45 mm off the line from the cue ball to the red, a third of the way: the red's
+    // far edge can be hit, its near edge cannot.
+    const physics::Vec2 c = s.positions[0], to = s.positions[1] - c;
+    const physics::Vec2 u = (1.0 / physics::norm(to)) * to, n{u.y, -u.x};
+    s.positions[BL] = c + 0.3 * u + 0.045 * n;
+    s.misses = 2;
+    const SnookerVerdict v = judge_snooker({}, kTable, s, std::vector<Event>{strike(), hit(0, Y)});
+    ASSERT_TRUE(v.miss);
+    EXPECT_EQ(v.misses, 0);
+    EXPECT_FALSE(v.frame_over);
+}
+
+TEST(SnookerFreeBall, LeavingTheOpponentSnookeredBehindItIsAFoul) {  // S3 R12
+    SnookerState s = snookered_position();
+    s.positions[0] = {1.5, 0.3};
+    s.positions[1] = {2.6, 0.3};
+    s.free_ball = true;
+    s.nominated = PK;
+    Event h = hit(0, PK);
+    h.balls[0].pos = {2.0, 0.3};
+    h.balls[1].pos = {2.0 + 2 * R, 0.3};
+    Event rest = roll(PK);
+    rest.balls[0].pos = {2.3, 0.3};
+    const SnookerVerdict v = judge_snooker({}, kTable, s, std::vector<Event>{strike(), h, rest});
+    EXPECT_EQ(v.fouls, std::vector<F>{F::snookered_by_free_ball});
+    EXPECT_EQ(v.foul_points, 4);
+    EXPECT_EQ(v.next_shooter, B);
+    // The same stroke leaving the pink off the line is legal.
+    rest.balls[0].pos = {2.3, 0.6};
+    const SnookerVerdict ok = judge_snooker({}, kTable, s, std::vector<Event>{strike(), h, rest});
+    EXPECT_FALSE(ok.foul);
+}
+
 TEST(SnookerPlayAgain, NotOpenAfterALegalStroke) {  // S3 'Play Again'
     const SnookerState s = with(15);
     const SnookerVerdict v = judge_snooker({}, kTable, s, std::vector<Event>{strike(), hit(0, 1)});
