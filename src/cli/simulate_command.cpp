@@ -66,6 +66,22 @@ physics::Params default_ball_set(const JsonIn& doc) {
     return {};
 }
 
+std::vector<double> read_sample_times(const JsonIn& times) {
+    std::vector<double> out;
+    std::size_t n = times.array_size();
+    if (n > max_sample_times)
+        times.fail(fmt::format("{} times given: at most {} are allowed", n, max_sample_times));
+    out.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        JsonIn t = times.at(i);
+        double v = t.number();
+        if (!(v >= 0.0 && v <= max_sample_time))
+            t.fail(fmt::format("{} is out of range: must be from 0 to {} s", v, max_sample_time));
+        out.push_back(v);
+    }
+    return out;
+}
+
 SimulateInput read_input(const JsonIn& doc) {
     doc.expect_object(
         {"table", "params", "models", "balls", "rack", "strike", "sample_times", "max_events"});
@@ -99,20 +115,7 @@ SimulateInput read_input(const JsonIn& doc) {
         if (balls || in.stroke->ball != 0) check_strikable(doc, in.balls, in.stroke->ball);
     }
 
-    if (auto times = doc.find("sample_times")) {
-        std::size_t n = times->array_size();
-        if (n > max_sample_times)
-            times->fail(fmt::format("{} times given: at most {} are allowed", n, max_sample_times));
-        in.sample_times.reserve(n);
-        for (std::size_t i = 0; i < n; ++i) {
-            JsonIn t = times->at(i);
-            double v = t.number();
-            if (!(v >= 0.0 && v <= max_sample_time))
-                t.fail(
-                    fmt::format("{} is out of range: must be from 0 to {} s", v, max_sample_time));
-            in.sample_times.push_back(v);
-        }
-    }
+    if (auto times = doc.find("sample_times")) in.sample_times = read_sample_times(*times);
 
     if (auto m = doc.find("max_events"))
         in.options.max_events = static_cast<std::size_t>(m->integer_in(1, max_event_cap));

@@ -40,6 +40,7 @@ rules::SnookerOptions read_options(const JsonIn& in) {
 }
 
 std::set<int> read_on_table(const JsonIn& in) {
+    if (in.array_size() == 0) in.fail("the table is empty: the frame is over, nothing to judge");
     std::set<int> on;
     for (std::size_t i = 0; i < in.array_size(); ++i) {
         const int id = static_cast<int>(in.at(i).integer_in(1, ball::black));

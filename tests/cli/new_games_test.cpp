@@ -123,6 +123,9 @@ std::vector<Bad> bad_cases() {
         "red_out_of_range", s, [](json& d) { d["state"]["on_table"][0] = 22; },
         "state.on_table[0]");
     add(
+        "empty_table", s, [](json& d) { d["state"]["on_table"] = json::array(); },
+        "state.on_table");
+    add(
         "red_twice", s, [](json& d) { d["state"]["on_table"][1] = 1; }, "state.on_table[1]");
     add(
         "bad_cue_ball", s, [](json& d) { d["state"]["cue_ball"] = "in_hand_kitchen"; },
