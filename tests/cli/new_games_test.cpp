@@ -321,3 +321,44 @@ TEST(NewGamesBinary, JudgeSnookerExitCodes) {
 }
 
 }  // namespace
+
+namespace {
+
+// simulate's events go into judge unchanged: every field of every event is read.
+TEST(NewGamesRoundTrip, SnookerBreakJudged) {
+    const nlohmann::ordered_json shot = cli::simulate_command(json::parse(
+        R"({"table": "snooker12ft", "rack": {"game": "snooker"},
+            "strike": {"speed": 7, "heading_deg": 5, "side": -0.3}})"));
+    json positions = json::object();
+    json on_table = json::array();
+    for (int id = 1; id <= 21; ++id) on_table.push_back(id);
+    json doc = {{"game", "snooker"},
+                {"state", {{"shooter", "A"}, {"on_table", on_table}, {"cue_ball", "on_table"}}},
+                {"events", json::parse(shot["events"].dump())}};
+    const nlohmann::ordered_json out = cli::judge_command(doc);
+    EXPECT_EQ(out["foul"].get<bool>(), !out["fouls"].empty());
+    EXPECT_EQ(out["scores"]["A"].get<int>(), out["points_scored"].get<int>());
+    EXPECT_EQ(out["scores"]["B"].get<int>(), out["foul_points"].get<int>());
+    EXPECT_GT(out["state"]["positions"].size(), 15u);  // the balls where the shot left them
+}
+
+TEST(NewGamesRoundTrip, CaromStrokeOnTheYellowJudged) {
+    const nlohmann::ordered_json shot = cli::simulate_command(json::parse(
+        R"({"table": "carom10ft", "rack": {"game": "three_cushion"},
+            "strike": {"speed": 4, "heading_deg": 60, "side": 0.5, "ball": 1}})"));
+    json doc = {
+        {"game", "three_cushion"},
+        {"state",
+         {{"shooter", "B"},
+          {"starter", "A"},
+          {"opening", false},
+          {"positions", {{"0", {0.71, 0.71 - 0.1825}}, {"1", {0.71, 0.71}}, {"2", {2.13, 0.71}}}}}},
+        {"events", json::parse(shot["events"].dump())}};
+    const nlohmann::ordered_json out = cli::judge_command(doc);
+    EXPECT_EQ(out["fouls"], json::array());
+    EXPECT_EQ(out["state"]["positions"].size(), 3u);
+    EXPECT_NE(out["state"]["positions"]["1"], json::parse("[0.71, 0.71]"));  // the yellow moved
+    EXPECT_EQ(out["next_shooter"] == "B", out["point"].get<bool>());
+}
+
+}  // namespace
