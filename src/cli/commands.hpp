@@ -7,6 +7,8 @@
 #include <string>
 #include <string_view>
 
+#include "game/json_field.hpp"
+
 namespace cli {
 
 /// `simulate`: a table, parameters, balls (or a rack) and an optional strike → the shot's
@@ -15,6 +17,10 @@ nlohmann::ordered_json simulate_command(const nlohmann::json& input);
 
 /// `judge`: a game state and a shot's events → the verdict and the next state.
 nlohmann::ordered_json judge_command(const nlohmann::json& input);
+
+/// `judge` of a snooker or three-cushion document (`game` "snooker" or "three_cushion").
+nlohmann::ordered_json snooker_judge_document(const game::Field& input);
+nlohmann::ordered_json carom_judge_document(const game::Field& input);
 
 /// `decide`: a game's state (and a pending choice) → the AI's stroke, call, ball-in-hand spot,
 /// push-out or choice, its expected success, the simulations it ran and the seconds it took.

@@ -9,6 +9,7 @@
 #include "physics/params.hpp"
 #include "physics/table.hpp"
 #include "rules/judge.hpp"
+#include "rules/names.hpp"
 
 namespace cli {
 
@@ -18,7 +19,14 @@ namespace {
 nlohmann::ordered_json judge_document(const nlohmann::json& input) {
     JsonIn in(input, "");
     in.expect_object({"game", "table", "options", "state", "events"});
-    const rules::Game game = read_game(in.at("game"));
+    // The pool games share one schema; snooker and three-cushion have their own.
+    const JsonIn game_in = in.at("game");
+    if (game_in.raw() == "snooker") return snooker_judge_document(in);
+    if (game_in.raw() == "three_cushion") return carom_judge_document(in);
+    if (game_in.raw().is_string() && !rules::parse<rules::Game>(game_in.string()))
+        game_in.fail("unknown value \"" + game_in.string() +
+                     "\" (expected one of \"8ball\", \"9ball\", \"snooker\", \"three_cushion\")");
+    const rules::Game game = read_game(game_in);
     const physics::Params params;  // the rules need only the ball radius
     physics::TableSpec spec = *physics::table_preset("9ft");
     if (auto t = in.find("table")) spec = read_table(*t, params.ball_radius);

@@ -19,6 +19,48 @@ physics::TableSpec read_table(const JsonIn& in, double ball_radius) {
     return game::read_table(in, ball_radius, game::Fields::required);
 }
 
+namespace {
+
+// The parameters an override object may set, and where each goes.
+constexpr std::array<std::pair<std::string_view, double physics::Params::*>, 13> kParamFields{{
+    {"ball_radius", &physics::Params::ball_radius},
+    {"ball_mass", &physics::Params::ball_mass},
+    {"gravity", &physics::Params::gravity},
+    {"mu_slide", &physics::Params::mu_slide},
+    {"mu_roll", &physics::Params::mu_roll},
+    {"spin_decel", &physics::Params::spin_decel},
+    {"e_ball", &physics::Params::e_ball},
+    {"e_cushion", &physics::Params::e_cushion},
+    {"mu_cushion", &physics::Params::mu_cushion},
+    {"cue_mass", &physics::Params::cue_mass},
+    {"cue_tip_e", &physics::Params::cue_tip_e},
+    {"cue_endmass", &physics::Params::cue_endmass},
+    {"miscue_limit", &physics::Params::miscue_limit},
+}};
+
+physics::Params ball_set(const JsonIn& in) {
+    const std::string name = in.one_of({"pool", "snooker", "carom"});
+    return *physics::params_preset(name);
+}
+
+}  // namespace
+
+physics::Params read_params(const JsonIn& in, const physics::Params& base) {
+    if (in.raw().is_string()) return ball_set(in);
+    if (!in.raw().is_object() || !in.has("preset")) {
+        const physics::Params read = game::read_params(in, game::Fields::required);
+        if (!in.raw().is_object()) return read;
+        physics::Params p = base;
+        for (const auto& [key, field] : kParamFields)
+            if (in.has(key)) p.*field = read.*field;
+        if (in.has("mu_ball")) p.mu_ball = read.mu_ball;
+        return p;
+    }
+    nlohmann::json overrides = in.raw();
+    overrides.erase("preset");
+    return read_params(JsonIn(overrides, in.path()), ball_set(in.at("preset")));
+}
+
 physics::Models read_models(const JsonIn& in) {
     in.expect_object({"ball_ball", "cushion"});
     physics::Models m;
@@ -54,15 +96,19 @@ physics::Vec2 read_position(const JsonIn& in) {
 std::vector<physics::BallState> read_balls(const JsonIn& in, const physics::Table& table,
                                            const physics::Params& params) {
     std::size_t n = in.array_size();
-    if (n > 16) in.fail(fmt::format("{} balls given: a table holds at most 16 (ids 0–15)", n));
+    constexpr std::size_t most = physics::max_ball_id + 1;
+    if (n > most)
+        in.fail(fmt::format("{} balls given: a table holds at most {} (ids 0–{})", n, most,
+                            physics::max_ball_id));
     std::vector<physics::BallState> balls;
-    std::array<std::optional<std::size_t>, 16> seen{};  // index of each id given so far
+    std::array<std::optional<std::size_t>, physics::max_ball_id + 1>
+        seen{};  // index of each id given so far
     for (std::size_t i = 0; i < n; ++i) {
         JsonIn b = in.at(i);
         b.expect_object({"id", "pos", "vel", "spin"});
         physics::BallState s;
         JsonIn id = b.at("id");
-        s.id = static_cast<int>(id.integer_in(0, 15));
+        s.id = static_cast<int>(id.integer_in(0, physics::max_ball_id));
         auto& first = seen[static_cast<std::size_t>(s.id)];
         if (first)
             id.fail(fmt::format("ball {} is given twice (also {}[{}]): ids must be unique", s.id,
@@ -91,9 +137,11 @@ std::vector<physics::BallState> read_balls(const JsonIn& in, const physics::Tabl
 std::vector<physics::BallState> read_rack(const JsonIn& in, const physics::Table& table,
                                           const physics::Params& params) {
     in.expect_object({"game", "seed", "cue_pos"});
-    physics::RackType type = in.at("game").one_of({"8ball", "9ball"}) == "8ball"
-                                 ? physics::RackType::eight_ball
-                                 : physics::RackType::nine_ball;
+    const std::string game = in.at("game").one_of({"8ball", "9ball", "snooker", "three_cushion"});
+    const physics::RackType type = game == "8ball"     ? physics::RackType::eight_ball
+                                   : game == "9ball"   ? physics::RackType::nine_ball
+                                   : game == "snooker" ? physics::RackType::snooker
+                                                       : physics::RackType::three_cushion;
     std::uint64_t seed = 0;
     if (auto v = in.find("seed")) seed = static_cast<std::uint64_t>(v->integer_in(0, INT64_MAX));
     std::optional<physics::Vec2> cue_pos;
@@ -117,13 +165,14 @@ std::vector<physics::BallState> read_rack(const JsonIn& in, const physics::Table
 }
 
 physics::Stroke read_stroke(const JsonIn& in) {
-    in.expect_object({"speed", "heading_deg", "side", "top", "elevation_deg"});
+    in.expect_object({"speed", "heading_deg", "side", "top", "elevation_deg", "ball"});
     physics::Stroke s;
     s.speed = in.at("speed").number_in(0.0, limits::max_cue_speed);
     if (auto v = in.find("heading_deg")) s.heading_deg = v->number_in(-360.0, 360.0);
     if (auto v = in.find("side")) s.side = v->number_in(-1.0, 1.0);
     if (auto v = in.find("top")) s.top = v->number_in(-1.0, 1.0);
     if (auto v = in.find("elevation_deg")) s.elevation_deg = v->number_in(0.0, 90.0);
+    if (auto v = in.find("ball")) s.ball = static_cast<int>(v->integer_in(0, physics::max_ball_id));
     return s;
 }
 

@@ -23,24 +23,30 @@ inline constexpr double max_cue_speed = 20.0;     ///< strike speed (unit: m/s)
 }  // namespace limits
 
 /// `table` (game::read_table with the CLI's optional fields): a preset name ("7ft", "8ft",
-/// "9ft", "unbounded") or an object {"preset": "9ft", "length": ..., ...}; validated for a
-/// ball of radius `ball_radius`.
+/// "9ft", "snooker12ft", "carom10ft", "unbounded") or an object {"preset": "9ft", "length": ...,
+/// ...}; validated for a ball of radius `ball_radius`.
 physics::TableSpec read_table(const JsonIn& in, double ball_radius);
+
+/// `params`: a ball set ("pool", "snooker", "carom"), or an object of overrides of `base`
+/// (or of the set its "preset" names).
+physics::Params read_params(const JsonIn& in, const physics::Params& base);
 
 /// `models`: {"ball_ball": "frictional" | "frictionless", "cushion": "han2005" | "simple"}.
 physics::Models read_models(const JsonIn& in);
 
 /// `balls`: [{"id": 0, "pos": [x, y], "vel": [vx, vy], "spin": [wx, wy, wz]}, ...], with
-/// unique ids 0–15, checked against the table (physics::validate_layout): no overlaps, every
+/// unique ids 0–21, checked against the table (physics::validate_layout): no overlaps, every
 /// centre on the playing surface. Motion states are set from velocity and spin.
 std::vector<physics::BallState> read_balls(const JsonIn& in, const physics::Table& table,
                                            const physics::Params& params);
 
-/// `rack`: {"game": "8ball" | "9ball", "seed": 7, "cue_pos": [x, y]} → the racked balls.
+/// `rack`: {"game": "8ball" | "9ball" | "snooker" | "three_cushion", "seed": 7,
+/// "cue_pos": [x, y]} → the racked balls (physics::rack).
 std::vector<physics::BallState> read_rack(const JsonIn& in, const physics::Table& table,
                                           const physics::Params& params);
 
-/// `strike`: {"speed", "heading_deg", "side", "top", "elevation_deg"} (speed required).
+/// `strike`: {"speed", "heading_deg", "side", "top", "elevation_deg", "ball"} (speed required;
+/// `ball`, the struck ball, default 0).
 physics::Stroke read_stroke(const JsonIn& in);
 
 }  // namespace cli

@@ -30,29 +30,64 @@ struct SimulateInput {
     std::vector<double> sample_times;
 };
 
-// Ball 0 must exist and be at rest to be struck.
-void check_strikable(const JsonIn& doc, const std::vector<physics::BallState>& balls) {
+// The struck ball must exist and be at rest.
+void check_strikable(const JsonIn& doc, const std::vector<physics::BallState>& balls, int id) {
     for (std::size_t i = 0; i < balls.size(); ++i) {
         const physics::BallState& b = balls[i];
-        if (b.id != 0) continue;
+        if (b.id != id) continue;
         if (b.vel.x != 0.0 || b.vel.y != 0.0)
             throw BadInput(fmt::format("balls[{}].vel", i),
-                           "ball 0 must be at rest to be struck: give it no velocity, or drop "
-                           "the strike");
+                           fmt::format("ball {} must be at rest to be struck: give it no "
+                                       "velocity, or drop the strike",
+                                       id));
         if (b.spin.x != 0.0 || b.spin.y != 0.0 || b.spin.z != 0.0)
             throw BadInput(fmt::format("balls[{}].spin", i),
-                           "ball 0 must be at rest to be struck: give it no spin, or drop the "
-                           "strike");
+                           fmt::format("ball {} must be at rest to be struck: give it no spin, "
+                                       "or drop the strike",
+                                       id));
         return;
     }
-    doc.at("strike").fail("there is no ball 0 (the cue ball) to strike: add a ball with id 0");
+    if (id == 0)
+        doc.at("strike").fail("there is no ball 0 (the cue ball) to strike: add a ball with id 0");
+    doc.at("strike").at("ball").fail(fmt::format("there is no ball {} to strike", id));
+}
+
+// The ball set that goes with the table: snooker balls on a snooker table, carom balls on a
+// carom table, pool balls on any other.
+physics::Params default_ball_set(const JsonIn& doc) {
+    std::string preset;
+    if (auto t = doc.find("table")) {
+        if (t->raw().is_string()) preset = t->raw().get<std::string>();
+        if (t->raw().is_object() && t->raw().contains("preset") && t->raw()["preset"].is_string())
+            preset = t->raw()["preset"].get<std::string>();
+    }
+    if (preset == "snooker12ft") return *physics::params_preset("snooker");
+    if (preset == "carom10ft") return *physics::params_preset("carom");
+    return {};
+}
+
+std::vector<double> read_sample_times(const JsonIn& times) {
+    std::vector<double> out;
+    std::size_t n = times.array_size();
+    if (n > max_sample_times)
+        times.fail(fmt::format("{} times given: at most {} are allowed", n, max_sample_times));
+    out.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        JsonIn t = times.at(i);
+        double v = t.number();
+        if (!(v >= 0.0 && v <= max_sample_time))
+            t.fail(fmt::format("{} is out of range: must be from 0 to {} s", v, max_sample_time));
+        out.push_back(v);
+    }
+    return out;
 }
 
 SimulateInput read_input(const JsonIn& doc) {
     doc.expect_object(
         {"table", "params", "models", "balls", "rack", "strike", "sample_times", "max_events"});
     SimulateInput in;
-    if (auto p = doc.find("params")) in.params = game::read_params(*p, game::Fields::required);
+    in.params = default_ball_set(doc);
+    if (auto p = doc.find("params")) in.params = read_params(*p, in.params);
     if (auto m = doc.find("models")) in.options.models = read_models(*m);
 
     physics::TableSpec spec = *physics::table_preset("9ft");
@@ -77,23 +112,10 @@ SimulateInput read_input(const JsonIn& doc) {
 
     if (auto s = doc.find("strike")) {
         in.stroke = cli::read_stroke(*s);
-        if (balls) check_strikable(doc, in.balls);  // a rack's cue ball is always at rest
+        if (balls || in.stroke->ball != 0) check_strikable(doc, in.balls, in.stroke->ball);
     }
 
-    if (auto times = doc.find("sample_times")) {
-        std::size_t n = times->array_size();
-        if (n > max_sample_times)
-            times->fail(fmt::format("{} times given: at most {} are allowed", n, max_sample_times));
-        in.sample_times.reserve(n);
-        for (std::size_t i = 0; i < n; ++i) {
-            JsonIn t = times->at(i);
-            double v = t.number();
-            if (!(v >= 0.0 && v <= max_sample_time))
-                t.fail(
-                    fmt::format("{} is out of range: must be from 0 to {} s", v, max_sample_time));
-            in.sample_times.push_back(v);
-        }
-    }
+    if (auto times = doc.find("sample_times")) in.sample_times = read_sample_times(*times);
 
     if (auto m = doc.find("max_events"))
         in.options.max_events = static_cast<std::size_t>(m->integer_in(1, max_event_cap));

@@ -412,7 +412,8 @@ namespace {
 constexpr double max_table_size = 100.0;  // (unit: m) far beyond any table; keeps sums finite
 
 physics::TableSpec preset(const Field& f) {
-    const std::string name = f.one_of({"7ft", "8ft", "9ft", "unbounded"});
+    const std::string name =
+        f.one_of({"7ft", "8ft", "9ft", "snooker12ft", "carom10ft", "unbounded"});
     std::optional<physics::TableSpec> spec = physics::table_preset(name);
     if (!spec) f.fail(fmt::format("the engine has no table preset \"{}\"", name));
     return *spec;
@@ -467,7 +468,8 @@ physics::TableSpec read_table(const Field& f, double ball_radius, Fields fields)
         read_table_fields(f, spec, fields);
     } else {
         f.fail(
-            "expected a preset name (\"7ft\", \"8ft\", \"9ft\", \"unbounded\") or an object like "
+            "expected a preset name (\"7ft\", \"8ft\", \"9ft\", \"snooker12ft\", \"carom10ft\", "
+            "\"unbounded\") or an object like "
             "{\"preset\": \"9ft\", \"length\": 2.54}");
     }
     if (std::optional<std::string> problem = physics::validate_table_spec(spec, ball_radius)) {

@@ -15,8 +15,11 @@ enum class Motion : std::uint8_t { stationary, spinning, sliding, rolling, pocke
 std::string_view to_string(Motion m);
 std::optional<Motion> motion_from_string(std::string_view s);
 
+/// The largest ball id: pool uses 0–15, snooker 0–21 (15 reds, then yellow 16 … black 21).
+inline constexpr int max_ball_id = 21;
+
 struct BallState {
-    int id = 0;  ///< 0 cue ball, 1–15 object balls
+    int id = 0;  ///< 0 cue ball, then object balls up to max_ball_id (docs/physics.md, "Ball sets")
     Vec2 pos;    ///< centre (unit: m), table frame; z is R
     Vec2 vel;    ///< velocity of the centre (unit: m/s)
     Vec3 spin;   ///< angular velocity ω (unit: rad/s)

@@ -19,7 +19,9 @@ std::optional<LayoutError> validate_layout(const Table& table, const Params& par
     auto finite = [](double v) { return std::isfinite(v); };
     for (std::size_t i = 0; i < balls.size(); ++i) {
         const BallState& b = balls[i];
-        if (b.id < 0 || b.id > 15) return LayoutError{i, "id", "ball ids are 0 (cue ball) to 15"};
+        if (b.id < 0 || b.id > max_ball_id)
+            return LayoutError{i, "id",
+                               "ball ids are 0 (cue ball) to " + std::to_string(max_ball_id)};
         for (std::size_t j = 0; j < i; ++j)
             if (balls[j].id == b.id)
                 return LayoutError{i, "id", "ball " + std::to_string(b.id) + " is given twice"};

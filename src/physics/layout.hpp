@@ -20,8 +20,8 @@ struct LayoutError {
     std::string message;  ///< e.g. "ball overlaps ball 5"
 };
 
-/// Empty if the layout is valid: ids 0–15 unique, centres on the surface, no overlaps, finite
-/// numbers, pocketed balls excluded from the checks.
+/// Empty if the layout is valid: ids 0–max_ball_id unique, centres on the surface, no overlaps,
+/// finite numbers, pocketed balls excluded from the checks.
 std::optional<LayoutError> validate_layout(const Table& table, const Params& params,
                                            std::span<const BallState> balls);
 

@@ -1,8 +1,10 @@
 // All physical constants of the simulation, in one place, with their units (docs/physics.md).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <optional>
+#include <string_view>
 
 namespace physics {
 
@@ -25,6 +27,11 @@ struct Params {
     double cue_endmass = 0.015;  ///< effective end mass of the cue, for squirt (unit: kg)
     double miscue_limit = 0.5;   ///< largest tip offset that does not miscue (unit: fraction of R)
 };
+
+/// The ball sets: "pool" (the defaults above), "snooker" (52.5 mm balls, napped cloth),
+/// "carom" (61.5 mm balls, heated cloth); sources in docs/physics.md. Empty for another name.
+std::optional<Params> params_preset(std::string_view name);
+inline constexpr std::array<std::string_view, 3> params_preset_names{"pool", "snooker", "carom"};
 
 /// Ball–ball collision model.
 enum class BallBallModel {

@@ -6,6 +6,8 @@
 #include <span>
 #include <utility>
 
+#include "physics/markings.hpp"
+
 namespace physics {
 
 std::uint64_t SplitMix64::next() {
@@ -57,6 +59,8 @@ BallState ball_at(int id, Vec2 pos) {
 
 std::vector<BallState> rack(RackType type, const Table& table, const Params& params,
                             std::uint64_t seed, std::optional<Vec2> cue_pos) {
+    if (type == RackType::snooker) return snooker_rack(table, params, cue_pos);
+    if (type == RackType::three_cushion) return carom_rack(table, cue_pos);
     SplitMix64 rng(seed);
     const double R = params.ball_radius;
     std::vector<BallState> balls{ball_at(0, cue_pos.value_or(table.head_spot()))};
@@ -100,6 +104,32 @@ std::vector<BallState> rack(RackType type, const Table& table, const Params& par
               [](const BallState& a, const BallState& b) { return a.id < b.id; });
     balls.insert(balls.end(), objects.begin(), objects.end());
     return balls;
+}
+
+std::vector<BallState> snooker_rack(const Table& table, const Params& params,
+                                    std::optional<Vec2> cue_pos) {
+    const SnookerMarkings m = snooker_markings(table);
+    const double R = params.ball_radius;
+    constexpr double kGapToPink = 0.001;  ///< "as near as possible without touching" (unit: m)
+    const Vec2 brown = m.spot(snooker_ball::brown), yellow = m.spot(snooker_ball::yellow);
+    std::vector<BallState> balls{ball_at(0, cue_pos.value_or(0.5 * (brown + yellow)))};
+    const Vec2 pink = m.spot(snooker_ball::pink);
+    const Vec2 apex{pink.x + 2.0 * R + kGapToPink, pink.y};
+    const double row_step = std::sqrt(3.0) * R;
+    int id = snooker_ball::first_red;
+    for (int row = 0; row < 5; ++row)
+        for (int j = 0; j <= row; ++j)
+            balls.push_back(
+                ball_at(id++, {apex.x + row * row_step, apex.y + (j - row / 2.0) * 2.0 * R}));
+    for (int colour = snooker_ball::yellow; colour <= snooker_ball::black; ++colour)
+        balls.push_back(ball_at(colour, m.spot(colour)));
+    return balls;
+}
+
+std::vector<BallState> carom_rack(const Table& table, std::optional<Vec2> cue_pos) {
+    const CaromSpots spots = carom_spots(table);
+    return {ball_at(carom_ball::white, cue_pos.value_or(spots.start_right)),
+            ball_at(carom_ball::yellow, spots.bottom), ball_at(carom_ball::red, spots.top)};
 }
 
 }  // namespace physics

@@ -129,7 +129,7 @@ class Simulation {
           n_(balls.size()),
           faces_(table),
           queue_(balls.size()) {
-        assert(n_ <= kMaxBalls && "at most 16 balls (ids 0-15)");
+        assert(n_ <= kMaxBalls && "at most 22 balls (ids 0-21)");
         drop_lateral_.reserve(table_.pockets.size());
         for (const Pocket& pk : table_.pockets)
             drop_lateral_.push_back(0.5 * norm(pk.mouth_b - pk.mouth_a) + table_.spec.jaw_depth);
@@ -149,7 +149,7 @@ class Simulation {
     }
 
     void strike(const Stroke& stroke) {
-        const std::size_t cue = index_of(0);
+        const std::size_t cue = index_of(stroke.ball);
         const StrikeResult r = physics::strike(params_, stroke);
         BallState s = current(cue).start;
         s.vel = r.vel;
@@ -184,7 +184,7 @@ class Simulation {
     std::size_t index_of(int id) const {
         for (std::size_t i = 0; i < n_; ++i)
             if (segments_[i].front().start.id == id) return i;
-        assert(false && "the struck ball 0 must be in the layout");
+        assert(false && "the struck ball must be in the layout");
         return 0;
     }
 

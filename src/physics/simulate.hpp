@@ -11,8 +11,8 @@
 
 namespace physics {
 
-/// Simulates a shot. `balls` must be a valid layout (validate_layout); ball 0 is struck when
-/// `stroke` is given (it must then be at rest). Deterministic: the same input gives a
+/// Simulates a shot. `balls` must be a valid layout (validate_layout); ball `stroke->ball` is
+/// struck when `stroke` is given (it must then be at rest). Deterministic: the same input gives a
 /// bit-identical Shot.
 Shot simulate(const Table& table, const Params& params, std::span<const BallState> balls,
               const Stroke* stroke, const SimOptions& options = {});

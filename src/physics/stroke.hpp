@@ -9,6 +9,7 @@ struct Stroke {
     double side = 0.0;         ///< tip offset right of centre as the shooter sees it (unit: R)
     double top = 0.0;          ///< tip offset above centre (unit: R); + is follow, − draw
     double elevation_deg = 0.0;  ///< cue angle above horizontal (unit: deg)
+    int ball = 0;  ///< id of the struck ball: 0, or a carom player's own cue ball (1, yellow)
 };
 
 }  // namespace physics

@@ -92,6 +92,8 @@ std::optional<TableSpec> table_preset(std::string_view name) {
         s.width = 0.9906;
         return s;
     }
+    if (name == "snooker12ft") return snooker_table_spec();
+    if (name == "carom10ft") return carom_table_spec();
     if (name == "unbounded") {
         s.bounded = false;
         s.pockets = false;
@@ -99,6 +101,23 @@ std::optional<TableSpec> table_preset(std::string_view name) {
     }
     return std::nullopt;
 }
+
+namespace {
+
+/// A rounded nose must fit on its jaw facing and leave some rail: its tangent points lie
+/// r / tan(α/2) from the sharp tip (table.cpp, add_jaw).
+std::optional<std::string> check_rounding(const TableSpec& s) {
+    if (s.jaw_nose_radius <= 0.02) return std::nullopt;  // the pool range, always valid
+    for (double deg : {s.corner_facing_deg, s.side_facing_deg}) {
+        const double tangent = s.jaw_nose_radius / std::tan(deg * std::numbers::pi / 360.0);
+        if (tangent >= s.jaw_depth)
+            return "jaw_nose_radius: too large for the jaws (its rounding must end within "
+                   "jaw_depth)";
+    }
+    return std::nullopt;
+}
+
+}  // namespace
 
 std::optional<std::string> validate_table_spec(const TableSpec& s, double ball_radius) {
     auto finite_positive = [](double v) { return std::isfinite(v) && v > 0; };
@@ -118,8 +137,8 @@ std::optional<std::string> validate_table_spec(const TableSpec& s, double ball_r
         return "corner_facing_deg: must be from 90 to 170";
     if (!(s.side_facing_deg >= 90 && s.side_facing_deg <= 170))
         return "side_facing_deg: must be from 90 to 170";
-    if (!(std::isfinite(s.jaw_nose_radius) && s.jaw_nose_radius >= 0 && s.jaw_nose_radius <= 0.02))
-        return "jaw_nose_radius: must be from 0 to 0.02 m";
+    if (!(std::isfinite(s.jaw_nose_radius) && s.jaw_nose_radius >= 0 && s.jaw_nose_radius <= 0.05))
+        return "jaw_nose_radius: must be from 0 to 0.05 m";
     if (!(std::isfinite(s.cushion_height) && s.cushion_height >= ball_radius &&
           s.cushion_height < 2 * ball_radius))
         return "cushion_height: must be from R to 2R (the nose meets the ball above its centre)";
@@ -130,7 +149,7 @@ std::optional<std::string> validate_table_spec(const TableSpec& s, double ball_r
     if (!(std::isfinite(s.jaw_depth) && s.jaw_depth > s.corner_shelf + 0.01 &&
           s.jaw_depth > s.side_shelf + 0.01 && s.jaw_depth <= 0.2))
         return "jaw_depth: must exceed the shelves by 0.01 m and be at most 0.2 m";
-    return std::nullopt;
+    return check_rounding(s);
 }
 
 Table build_table(const TableSpec& spec) {

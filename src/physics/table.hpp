@@ -1,5 +1,6 @@
 // Table geometry: the playing surface, cushions, pocket jaws and drop regions, built from a
-// specification (presets 7ft, 8ft, 9ft; WPA dimensions). Frame and names: docs/cli.md.
+// specification (presets 7ft, 8ft, 9ft: WPA; snooker12ft: WPBSA; carom10ft: UMB). Frame and names:
+// docs/cli.md.
 #pragma once
 
 #include <array>
@@ -32,8 +33,18 @@ struct TableSpec {
     bool bounded = true;         ///< false: "unbounded", no cushions and no pockets
 };
 
-/// The named presets: "7ft", "8ft", "9ft", "unbounded". Empty for an unknown name.
+/// The named presets: "7ft", "8ft", "9ft", "snooker12ft", "carom10ft", "unbounded". Empty for
+/// an unknown name.
 std::optional<TableSpec> table_preset(std::string_view name);
+/// The preset names, in the order above.
+inline constexpr std::array<std::string_view, 6> table_preset_names{
+    "7ft", "8ft", "9ft", "snooker12ft", "carom10ft", "unbounded"};
+
+/// A 12 ft snooker table (WPBSA: playing area 3569 × 1778 mm) with rounded pocket jaws; the
+/// pocket figures are estimates (docs/physics.md, "Snooker and carom tables").
+TableSpec snooker_table_spec();
+/// A 10 ft carom table (UMB: 2840 × 1420 mm), no pockets, cushion nose 37 mm high.
+TableSpec carom_table_spec();
 
 /// Pockets, by compass direction (x east, y north).
 enum class PocketId : int { SW = 0, S = 1, SE = 2, NW = 3, N = 4, NE = 5 };

@@ -133,7 +133,7 @@ const std::vector<BadCase> kCases = {
     {"ball_too_fast", R"({"balls": [{"id": 1, "pos": [1, 0.6], "vel": [300, 0]}]})", "balls[0].vel",
      "too fast"},
     // Balls.
-    {"unknown_ball_id", R"({"balls": [{"id": 16, "pos": [1, 0.6]}]})", "balls[0].id",
+    {"unknown_ball_id", R"({"balls": [{"id": 22, "pos": [1, 0.6]}]})", "balls[0].id",
      "out of range"},
     {"negative_ball_id", R"({"balls": [{"id": -1, "pos": [1, 0.6]}]})", "balls[0].id",
      "out of range"},
@@ -154,8 +154,10 @@ const std::vector<BadCase> kCases = {
         {"id":6,"pos":[0.7,0.1]},{"id":7,"pos":[0.8,0.1]},{"id":8,"pos":[0.9,0.1]},
         {"id":9,"pos":[1.0,0.1]},{"id":10,"pos":[1.1,0.1]},{"id":11,"pos":[1.2,0.1]},
         {"id":12,"pos":[1.3,0.1]},{"id":13,"pos":[1.4,0.1]},{"id":14,"pos":[1.5,0.1]},
-        {"id":15,"pos":[1.6,0.1]},{"id":15,"pos":[1.7,0.1]}]})",
-     "balls", "at most 16"},
+        {"id":15,"pos":[1.6,0.1]},{"id":16,"pos":[1.7,0.1]},{"id":17,"pos":[1.8,0.1]},
+        {"id":18,"pos":[1.9,0.1]},{"id":19,"pos":[2.0,0.1]},{"id":20,"pos":[2.1,0.1]},
+        {"id":21,"pos":[2.2,0.1]},{"id":21,"pos":[2.3,0.1]}]})",
+     "balls", "at most 22"},
     {"no_balls", R"({"strike": {"speed": 1}})", "balls", "missing"},
     {"balls_and_rack", R"({"balls": [], "rack": {"game": "8ball"}})", "rack", "not both"},
     // Strike on a missing or moving cue ball.
@@ -169,7 +171,7 @@ const std::vector<BadCase> kCases = {
         "strike": {"speed": 1}})",
      "balls[1].spin", "at rest"},
     // Racks.
-    {"rack_unknown_game", R"({"rack": {"game": "snooker"}})", "rack.game", "unknown value"},
+    {"rack_unknown_game", R"({"rack": {"game": "bowls"}})", "rack.game", "unknown value"},
     {"rack_negative_seed", R"({"rack": {"game": "9ball", "seed": -3}})", "rack.seed",
      "out of range"},
     {"rack_cue_on_the_apex", R"({"rack": {"game": "8ball", "cue_pos": [1.905, 0.635]}})",

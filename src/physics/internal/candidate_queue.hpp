@@ -1,6 +1,6 @@
 // The event loop's candidate queue: each ball's own next event and every pair's next contact,
-// and per ball the first of those, so that the next event of the shot is a scan of 16 entries
-// and an event re-predicts only the balls it changed. Private to physics.
+// and per ball the first of those, so that the next event of the shot is a scan of one entry per
+// ball and an event re-predicts only the balls it changed. Private to physics.
 #pragma once
 
 #include <array>
@@ -39,7 +39,7 @@ struct Candidate {
 /// it, set its own candidate and its pairs, then refresh it (see Simulation::predict_for).
 class CandidateQueue {
   public:
-    static constexpr std::size_t kMaxBalls = 16;
+    static constexpr std::size_t kMaxBalls = 22;  ///< a snooker set; the bit sets are 32 bits
 
     explicit CandidateQueue(std::size_t balls);
 
