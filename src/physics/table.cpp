@@ -128,6 +128,10 @@ std::optional<std::string> validate_table_spec(const TableSpec& s, double ball_r
     if (!finite_positive(s.width) || s.width < 4 * d)
         return "width: must be at least 4 ball diameters";
     if (s.width > s.length) return "width: must not exceed length";
+    // Every rail has a nose, pockets or not.
+    if (!(std::isfinite(s.cushion_height) && s.cushion_height >= ball_radius &&
+          s.cushion_height < 2 * ball_radius))
+        return "cushion_height: must be from R to 2R (the nose meets the ball above its centre)";
     if (!s.pockets) return std::nullopt;
     if (!finite_positive(s.corner_mouth) || s.corner_mouth <= d || s.corner_mouth > s.width / 4)
         return "corner_mouth: must be wider than a ball and at most a quarter of the width";
@@ -139,9 +143,6 @@ std::optional<std::string> validate_table_spec(const TableSpec& s, double ball_r
         return "side_facing_deg: must be from 90 to 170";
     if (!(std::isfinite(s.jaw_nose_radius) && s.jaw_nose_radius >= 0 && s.jaw_nose_radius <= 0.05))
         return "jaw_nose_radius: must be from 0 to 0.05 m";
-    if (!(std::isfinite(s.cushion_height) && s.cushion_height >= ball_radius &&
-          s.cushion_height < 2 * ball_radius))
-        return "cushion_height: must be from R to 2R (the nose meets the ball above its centre)";
     if (!(std::isfinite(s.corner_shelf) && s.corner_shelf >= 0 && s.corner_shelf <= 0.1))
         return "corner_shelf: must be from 0 to 0.1 m";
     if (!(std::isfinite(s.side_shelf) && s.side_shelf >= 0 && s.side_shelf <= 0.1))

@@ -187,6 +187,10 @@ const std::vector<BadCase> kCases = {
      "out of range"},
     {"mouth_smaller_than_ball", doc(R"("table": {"corner_mouth": 0.03})"), "table.corner_mouth",
      ""},
+    // Found by fuzz_simulate: the engine made NaNs of a 1 m cushion on a pocketless table.
+    {"cushion_height_without_pockets",
+     doc(R"("table": {"pockets": false, "cushion_height": 1.0363})"), "table.cushion_height",
+     "from R to 2R"},
 };
 
 INSTANTIATE_TEST_SUITE_P(Cases, SimulateBadInput, ::testing::ValuesIn(kCases),
