@@ -2,7 +2,8 @@
 // fog on) offscreen and prints one JSON line: frame-time median and 95th percentile, fps.
 //   coolaaber-render-bench [--size 1280x720] [--frames 300] [--samples 4] [--scene mid_game]
 //                          [--png out.png]   (scenes: mid_game, racked, mid_roll, cue_view,
-//                          ball_in_hand, aim_overhead, cushion)
+//                          ball_in_hand, aim_overhead, cushion, rail_view, raised_cue, pocket,
+//                          room)
 #include <epoxy/gl.h>
 
 #include <algorithm>
@@ -69,9 +70,13 @@ render::DemoScene scene_named(const std::string& name, float aspect, int k, int 
     if (name == "ball_in_hand") return render::ball_in_hand_scene(aspect);
     if (name == "aim_overhead") return render::aim_overhead_scene(aspect);
     if (name == "cushion") return render::cushion_scene(aspect);
+    if (name == "rail_view") return render::rail_view_scene(aspect);
+    if (name == "raised_cue") return render::raised_cue_scene(aspect);
+    if (name == "pocket") return render::pocket_scene(aspect);
+    if (name == "room") return render::room_scene(aspect);
     throw std::invalid_argument(
-        "--scene: expected mid_game, racked, mid_roll, cue_view, ball_in_hand, aim_overhead or "
-        "cushion");
+        "--scene: expected mid_game, racked, mid_roll, cue_view, ball_in_hand, aim_overhead, "
+        "cushion, rail_view, raised_cue, pocket or room");
 }
 
 // Draws the scenes in turn (after 5 frames of warm-up); the frame times (unit: ms), sorted.

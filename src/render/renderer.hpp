@@ -30,8 +30,13 @@ struct BallView {
 struct CueView {
     glm::vec2 cue_ball{0.0f};  ///< cue-ball centre (unit: m)
     float heading = 0.0f;      ///< direction of the stroke, from +x counter-clockwise (unit: rad)
-    float elevation = 0.0f;    ///< butt raised by this angle (unit: rad)
-    float pull_back = 0.05f;   ///< gap between the tip and the ball (unit: m)
+    /// Butt raised by this angle (unit: rad); drawn at least at the elevation the rail forces
+    /// (render::drawn_cue_elevation), which the stroke must use too.
+    float elevation = 0.0f;
+    float pull_back = 0.05f;  ///< gap between the tip and the ball (unit: m)
+    /// Where the tip meets the ball: side (right of centre as the shooter sees it) and top
+    /// (above centre), unit: R, as on the panel's tip picture (physics::Stroke side, top).
+    glm::vec2 tip_offset{0.0f};
 };
 
 /// The aim guide: polylines on the cloth and a ghost ball, all from the physics engine.

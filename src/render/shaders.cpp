@@ -284,7 +284,8 @@ void main() {
             return;
         }
         vec3 albedo = texture(u_wood_tex, vec2(v_uv.x / 1.3, v_uv.y / 0.16)).rgb;  // an sRGB texture: linear when sampled
-        c = lamps_light_cheap(v_pos, n, albedo, 6, 0.25) + albedo * 0.06;
+        // The bevels shine; the vertical sides, lit at grazing angles, barely.
+        c = lamps_light_cheap(v_pos, n, albedo, 6, 0.25 * smoothstep(0.3, 0.9, n.z)) + albedo * 0.06;
         o_colour = vec4(tone_map(apply_fog(c, v_pos)), 1.0);
         return;
     }
@@ -387,6 +388,7 @@ uniform vec3 u_colour;        // sRGB
 uniform int u_stripe;         // 1: a stripe ball (colour band on white)
 uniform int u_cue;            // 1: the cue ball
 uniform int u_number;         // 1-15: the number in the white circles
+uniform float u_number_scale; // the circles' size relative to a real ball's (>= 1: far away)
 uniform vec4 u_tint;          // rgb: mixed into the colour by a (ball in hand, illegal: red)
 uniform float u_alpha;        // < 1: drawn see-through (ball in hand)
 uniform sampler2D u_numbers;  // the numbers' atlas, 4 x 4 cells (render::make_number_atlas)
@@ -430,10 +432,12 @@ void main() {
     if (u_stripe == 1 && abs(local.z) > 0.48) albedo = white;
     // The number's white circle, on both sides, and the number in it: the atlas cell of
     // u_number spans the circle; on the -x side the digits are mirrored to read from outside.
-    vec2 q = vec2(local.x >= 0.0 ? local.y : -local.y, local.z) * (1.0 / 0.456);
+    // The circle's radius: 0.456 R on a real ball, larger when the ball is small on screen.
+    float rho = 0.456 * u_number_scale;
+    vec2 q = vec2(local.x >= 0.0 ? local.y : -local.y, local.z) / rho;
     vec2 cell = vec2(float(u_number % 4), float(3 - u_number / 4));
     float ink = texture(u_numbers, (cell + 0.5 + 0.5 * clamp(q, -0.97, 0.97)) * 0.25).r;
-    if (u_cue == 0 && abs(local.x) > 0.89) albedo = mix(white, vec3(0.025, 0.022, 0.02), ink);
+    if (u_cue == 0 && abs(local.x) > sqrt(1.0 - rho * rho)) albedo = mix(white, vec3(0.025, 0.022, 0.02), ink);
     // The cue ball's red dots show its spin.
     if (u_cue == 1 && abs(local.x) > 0.985) albedo = vec3(0.75, 0.05, 0.04);
     albedo = to_linear(albedo);
@@ -582,6 +586,88 @@ void main() {
     vec3 albedo = to_linear(v_colour);
     vec3 c = lamps_light(v_pos, n, albedo, 90.0, 0.35) + albedo * 0.06;
     o_colour = vec4(tone_map(apply_fog(c, v_pos)), u_alpha);
+}
+)";
+
+// The room is large and dim: its light (the lamps, their shades' cut-off, the table blocking
+// them from the floor below it, a little bounced light) and its fog are computed per vertex.
+const char* const kRoomVert = R"(
+layout(location = 0) in vec3 a_pos;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec3 a_colour;
+uniform mat4 u_view_proj;
+uniform vec3 u_eye;
+uniform vec4 u_lamps[3];
+uniform vec3 u_lamp_colour;
+uniform vec4 u_footprint;   // the table's outline: xy min, xy max (unit: m)
+out vec3 v_pos;
+out vec3 v_normal;
+out vec3 v_colour;
+out vec3 v_light;
+out float v_fog;
+void main() {
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < 3; ++i) {
+        vec3 d = u_lamps[i].xyz - a_pos;
+        float inv = inversesqrt(dot(d, d));
+        vec3 l = d * inv;
+        // Below the cloth the table stands between the lamp and the point.
+        float t = clamp(-a_pos.z / max(d.z, 1e-4), 0.0, 1.0);
+        vec2 q = a_pos.xy + t * d.xy;
+        vec2 inside = smoothstep(u_footprint.xy - 0.15, u_footprint.xy + 0.15, q) *
+                      (1.0 - smoothstep(u_footprint.zw - 0.15, u_footprint.zw + 0.15, q));
+        float blocked = a_pos.z < -0.01 ? inside.x * inside.y : 0.0;
+        sum += smoothstep(0.25, 0.6, l.z) * max(dot(a_normal, l), 0.0) * inv * inv * (1.0 - blocked);
+    }
+    // Light bounced off the bright table and the room's own dim fill.
+    vec3 to_table = vec3(0.5 * (u_footprint.xy + u_footprint.zw), 0.0) - a_pos;
+    float bounce = max(dot(a_normal, normalize(to_table)), 0.0) / (1.0 + dot(to_table, to_table));
+    v_light = u_lamp_colour * sum + vec3(0.6, 0.55, 0.45) * bounce + vec3(0.05);
+    float dist = length(a_pos - u_eye);
+    v_fog = clamp((dist - 1.5) / 9.0, 0.0, 0.75);
+    v_pos = a_pos;
+    v_normal = a_normal;
+    v_colour = a_colour;
+    gl_Position = u_view_proj * vec4(a_pos, 1.0);
+}
+)";
+
+const char* const kRoomFrag = R"(
+in vec3 v_pos;
+in vec3 v_normal;
+in vec3 v_colour;
+in vec3 v_light;
+in float v_fog;
+layout(location = 0) out vec4 o_colour;
+uniform vec4 u_room;        // the walls: xy min, xy max (unit: m)
+uniform float u_floor_z;
+
+float hash(float x) { return fract(sin(x * 12.9898) * 43758.547); }
+
+void main() {
+    vec3 albedo = v_colour;
+    float shade = 1.0;
+    if (v_normal.z > 0.9 && v_pos.z < u_floor_z + 0.01) {
+        // Oak planks 11 cm wide in staggered 1.2 m lengths, dark seams, a faint grain.
+        float row = floor(v_pos.y / 0.11);
+        float along = v_pos.x + 1.2 * hash(row);
+        float board = floor(along / 1.2);
+        shade = 0.75 + 0.45 * hash(row * 7.13 + board * 3.71);
+        float seam = min(fract(v_pos.y / 0.11), fract(along / 1.2) * 10.9);
+        shade *= mix(0.45, 1.0, smoothstep(0.0, 0.03, seam));
+        shade *= 0.92 + 0.08 * sin(along * 55.0 + 3.0 * sin(v_pos.y * 90.0));
+    } else if (v_pos.z < u_floor_z + 1.0) {
+        // The wainscot's panels: raised frames every 0.7 m along the wall and a rail on top.
+        vec2 off = min(v_pos.xy - u_room.xy, u_room.zw - v_pos.xy);
+        if (min(off.x, off.y) < 0.01) {
+            float along = abs(v_normal.x) > 0.5 ? v_pos.y : v_pos.x;
+            float u = fract(along / 0.7), h = v_pos.z - u_floor_z;
+            float frame = min(min(u, 1.0 - u) * 7.0, min(abs(h - 0.12), abs(h - 0.88)) * 10.0);
+            shade = mix(0.55, 1.0, smoothstep(0.04, 0.12, frame));
+        }
+    }
+    vec3 c = to_linear(albedo) * shade * v_light;
+    o_colour = vec4(tone_map(mix(c, u_background, v_fog)), 1.0);
 }
 )";
 
