@@ -83,7 +83,9 @@ struct Table {
         if (controller.moving()) return;
         const float heading =
             static_cast<float>(controller.aim().heading_deg * std::numbers::pi / 180.0);
-        rig.set_anchor(cue_ball_at(controller), heading, true, last_camera);
+        const float elevation =
+            static_cast<float>(controller.aim().elevation_deg * std::numbers::pi / 180.0);
+        rig.set_anchor(cue_ball_at(controller), heading, true, last_camera, elevation);
     }
 
     void set_power(double power) {

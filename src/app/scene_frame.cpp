@@ -43,6 +43,7 @@ SceneFrame build_scene(const Controller& c, bool aim_guide,
         k.heading = static_cast<float>(a.heading_deg * std::numbers::pi / 180.0);
         k.elevation = static_cast<float>(a.elevation_deg * std::numbers::pi / 180.0);
         k.pull_back = pull_back(a.power);
+        k.tip_offset = {static_cast<float>(a.side), static_cast<float>(a.top)};
         f.cue = k;
         f.aim = preview->view;
         f.show_aim = aim_guide;
@@ -57,6 +58,7 @@ SceneFrame build_scene(const Controller& c, bool aim_guide,
             k.cue_ball = {static_cast<float>(at->second.x), static_cast<float>(at->second.y)};
             k.heading = static_cast<float>(r.stroke.heading_deg * std::numbers::pi / 180.0);
             k.elevation = static_cast<float>(r.stroke.elevation_deg * std::numbers::pi / 180.0);
+            k.tip_offset = {static_cast<float>(r.stroke.side), static_cast<float>(r.stroke.top)};
             k.pull_back = pull_back(power_of_speed(r.stroke.speed)) *
                           static_cast<float>(-c.playback().time() / stroke_lead);
             f.cue = k;

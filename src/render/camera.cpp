@@ -78,9 +78,10 @@ float cue_view_min_height(const physics::Table& table, float ball_radius, glm::v
 Camera cue_ball_camera(const physics::Table& table, float ball_radius, const CueCameraAim& aim) {
     const RoomDims room = room_dims(table);
     const glm::vec2 dir{std::cos(aim.heading), std::sin(aim.heading)};
-    // Come forward from the walls (a margin of 0.3 m).
-    float distance =
-        std::min(aim.distance, exit_distance(aim.cue_ball, -dir, room.lo, room.hi) - 0.3f);
+    // Come forward from the walls (0.3 m from each).
+    const glm::vec2 margin{0.3f, 0.3f};
+    float distance = std::min(
+        aim.distance, exit_distance(aim.cue_ball, -dir, room.lo + margin, room.hi - margin));
     distance = std::max(distance, 0.05f);
     float h = std::max(
         aim.height, cue_view_min_height(table, ball_radius, aim.cue_ball, aim.heading, distance));

@@ -21,7 +21,7 @@ struct Section {
     float share0 = 0.0f, share1 = 0.0f;
 };
 
-constexpr glm::vec3 kTip{0.16f, 0.26f, 0.52f};     // blue chalk on leather
+constexpr glm::vec3 kTip{0.16f, 0.26f, 0.52f};      // blue chalk on leather
 constexpr glm::vec3 kIvory{0.93f, 0.91f, 0.85f};    // ferrule
 constexpr glm::vec3 kMaple{0.88f, 0.76f, 0.54f};    // shaft
 constexpr glm::vec3 kSteel{0.72f, 0.72f, 0.74f};    // joint collar, rings
@@ -46,6 +46,10 @@ const std::array<Section, 14> kSections = {{
     {1.446f, 1.466f, 0.0144f, 0.0142f, kBumper, kBumper},
     {1.466f, kCueLength, 0.0142f, 0.0135f, kBumper, kBumper},
 }};
+
+/// How far the cue may be drawn back (the Power slider's most): the butt clears the rail at
+/// every pull-back, so the forced elevation does not change with the power.
+constexpr float kMostPullBack = 0.25f;
 
 /// Horizontal distance from `p` along the unit vector `d` to leaving the box [lo, hi] (0 when
 /// outside it already).
@@ -76,7 +80,7 @@ bool clears(const physics::Table& table, float ball_radius, glm::vec2 cue_ball, 
     for (const auto& [inset, height] : steps) {
         const glm::vec2 grow{inset, inset};
         const float x = leave_box(glm::vec2(a.tip), back, lo - grow, hi + grow);
-        if (x / c > kCueLength) continue;  // the cue ends before it
+        if (x / c > kCueLength + kMostPullBack) continue;  // the cue ends before it
         const float underside = a.tip.z + x * t - cue_radius(x / c) / c;
         if (underside < height + 0.002f) return false;
     }
@@ -87,7 +91,8 @@ bool clears(const physics::Table& table, float ball_radius, glm::vec2 cue_ball, 
 
 float cue_radius(float s) {
     for (const Section& k : kSections)
-        if (s <= k.s1) return k.r0 + (k.r1 - k.r0) * std::clamp((s - k.s0) / (k.s1 - k.s0), 0.0f, 1.0f);
+        if (s <= k.s1)
+            return k.r0 + (k.r1 - k.r0) * std::clamp((s - k.s0) / (k.s1 - k.s0), 0.0f, 1.0f);
     return kSections.back().r1;
 }
 

@@ -31,7 +31,8 @@ CueAxis cue_axis(glm::vec2 cue_ball, float ball_radius, float heading, float ele
 
 /// The least elevation (unit: rad, at most 60 degrees) at which the cue, its tip on the cue
 /// ball at `tip_offset`, passes over the cushion and the rail behind the ball with 2 mm to
-/// spare: 0 when the rail is far enough. A cue ball close to a rail forces the butt up.
+/// spare, drawn back by up to 0.25 m: 0 when the rail is far enough. A cue ball close to a rail
+/// forces the butt up; so does the far rail under a long cue from mid-table (about 1.4 degrees).
 float rail_forced_elevation(const physics::Table& table, float ball_radius, glm::vec2 cue_ball,
                             float heading, glm::vec2 tip_offset = {0.0f, 0.0f});
 

@@ -15,8 +15,8 @@ constexpr glm::vec3 kNetDark{0.06f, 0.05f, 0.045f}, kNetString{0.45f, 0.38f, 0.2
 /// A band round the pocket's axis from ring (r0, z0) to ring (r1, z1), 48 facets; normals
 /// toward the axis; colour per facet from `colour(facet)`.
 template <typename Colour>
-void add_band(std::vector<SolidVertex>& out, glm::vec2 c, float r0, float r1,
-              const float* z0, const float* z1, Colour colour) {
+void add_band(std::vector<SolidVertex>& out, glm::vec2 c, float r0, float r1, const float* z0,
+              const float* z1, Colour colour) {
     const int steps = 48;
     for (int i = 0; i < steps; ++i) {
         const float a0 = 6.2831853f * static_cast<float>(i) / steps;
@@ -76,7 +76,7 @@ glm::vec3 dropping_ball_centre(const physics::Table& table, float ball_radius, g
     const float slide = std::min(t / 0.12f, 1.0f);
     const glm::vec2 xy = glm::mix(from, hole->centre, slide * (2.0f - slide));
     const float z = ball_radius - 0.5f * 9.81f * t * t;
-    return {xy, std::max(z, -kNetDepth + 0.6f * ball_radius)};
+    return {xy, std::max(z, -kNetDepth + ball_radius + 0.002f)};  // lying in the net
 }
 
 }  // namespace render

@@ -153,7 +153,7 @@ struct Renderer::Impl {
     Mesh cloth, cushions, rails, rail_tops;
     GLuint quad_vao = 0, quad_vbo = 0;
     GLuint solid_vao = 0, solid_vbo = 0;
-    SolidMesh room, lamp_glow, pockets;
+    SolidMesh room, fixtures, lamp_glow, pockets;
     // The table's programs, one per material (cloth, cushion, wood), and the cloth's bake.
     std::array<GLuint, 5> table_progs{};  // by TableMaterial; [3] bakes
     GLuint ball_prog = 0, shadow_prog = 0, cushion_shadow_prog = 0, cue_shadow_prog = 0,
@@ -168,6 +168,10 @@ struct Renderer::Impl {
     // The static table's cache (colour and depth), valid for `cache_key`.
     GLuint cache_fbo = 0, cache_colour = 0, cache_depth = 0;
     std::vector<float> cache_key;
+    // The moving camera's smaller target, and the last frame's camera and size.
+    GLuint small_fbo = 0, small_colour = 0, small_depth = 0;
+    glm::ivec2 small_size{0};
+    std::vector<float> last_view;
 
     // Construction, in order.
     void build_hole_grid();
@@ -181,6 +185,12 @@ struct Renderer::Impl {
                            const glm::vec3& eye);
 
     void draw_table(const glm::mat4& view_proj, const glm::vec3& eye);
+    /// Whether the camera moved since the last frame (remembers this one).
+    bool camera_moved(const FrameView& frame, int width, int height);
+    /// Binds the moving camera's target of `size` (made on first use).
+    bool bind_small_target(glm::ivec2 size);
+    void free_small_target();
+    void draw_passes(const FrameView& frame, int width, int height, bool moving);
     // The frame's passes (Renderer::draw).
     void begin_frame(int width, int height);
     std::optional<CueAxis> cue_axis_of(const FrameView& frame) const;
@@ -240,6 +250,9 @@ void Renderer::Impl::set_table_uniforms(GLuint prog, const glm::mat4& view_proj,
     const physics::Vec2 foot = table.foot_spot();
     glUniform2f(glGetUniformLocation(prog, "u_foot_spot"), static_cast<float>(foot.x),
                 static_cast<float>(foot.y));
+    const physics::Vec2 head = table.head_spot();
+    glUniform2f(glGetUniformLocation(prog, "u_head_spot"), static_cast<float>(head.x),
+                static_cast<float>(head.y));
     glUniform1f(glGetUniformLocation(prog, "u_rail_height"), dims.rail_height);
     const glm::vec3 liner = tone_map(glm::vec3(0.012f, 0.010f, 0.009f), settings.exposure);
     glUniform3fv(glGetUniformLocation(prog, "u_liner_shown"), 1, glm::value_ptr(liner));
@@ -326,9 +339,14 @@ void Renderer::Impl::draw_room(const glm::mat4& view_proj, const glm::vec3& eye)
     glUniform4f(glGetUniformLocation(room_prog, "u_footprint"), -out, -out, L + out, W + out);
     glUniform4f(glGetUniformLocation(room_prog, "u_room"), r.lo.x, r.lo.y, r.hi.x, r.hi.y);
     glUniform1f(glGetUniformLocation(room_prog, "u_floor_z"), r.floor_z);
+    glEnable(GL_CULL_FACE);
     glBindVertexArray(room.vao);
     glDrawArrays(GL_TRIANGLES, 0, room.count);
-    draw_static_solid(lamp_glow, false, view_proj, eye);
+    glDisable(GL_CULL_FACE);
+    if (eye.z < lamps[0].z - 0.05f) {
+        draw_static_solid(fixtures, true, view_proj, eye);
+        draw_static_solid(lamp_glow, false, view_proj, eye);
+    }
 }
 
 void Renderer::Impl::draw_static_solid(const SolidMesh& mesh, bool lit, const glm::mat4& view_proj,
@@ -501,6 +519,7 @@ void Renderer::Impl::place_lamps() {
     const std::vector<Lamp> l = table_lamps(table);
     for (std::size_t i = 0; i < 3; ++i) lamps[i] = {l[i].pos, l[i].radius};
     room = upload_solid(room_mesh(table));
+    fixtures = upload_solid(fixtures_mesh(table));
     lamp_glow = upload_solid(lamp_glow_mesh(table));
     pockets = upload_solid(pocket_mesh(table));
 }
@@ -532,7 +551,7 @@ Renderer::~Renderer() {
     glDeleteVertexArrays(1, &m.quad_vao);
     glDeleteBuffers(1, &m.solid_vbo);
     glDeleteVertexArrays(1, &m.solid_vao);
-    for (SolidMesh* mesh : {&m.room, &m.lamp_glow, &m.pockets}) {
+    for (SolidMesh* mesh : {&m.room, &m.fixtures, &m.lamp_glow, &m.pockets}) {
         glDeleteBuffers(1, &mesh->vbo);
         glDeleteVertexArrays(1, &mesh->vao);
     }
@@ -545,6 +564,7 @@ Renderer::~Renderer() {
     glDeleteTextures(1, &m.wood_tex);
     glDeleteTextures(1, &m.number_tex);
     m.free_cache();
+    m.free_small_target();
 }
 
 RenderSettings& Renderer::settings() {
@@ -553,27 +573,94 @@ RenderSettings& Renderer::settings() {
 
 void Renderer::draw(const FrameView& frame, int width, int height) {
     Impl& m = *impl_;
+    if (m.settings.exposure != m.baked_exposure) m.bake_cloth_light();
+    const bool moving = m.camera_moved(frame, width, height);
+    const glm::ivec2 small{static_cast<int>(static_cast<float>(width) * m.settings.moving_scale),
+                           static_cast<int>(static_cast<float>(height) * m.settings.moving_scale)};
+    if (!moving || m.settings.moving_scale >= 1.0f || small.x < 16 || small.y < 16) {
+        m.draw_passes(frame, width, height, moving);
+        return;
+    }
+    // Drawn smaller, then scaled up into the caller's framebuffer.
+    GLint target = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+    if (!m.bind_small_target(small)) {
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target));
+        m.draw_passes(frame, width, height, moving);
+        return;
+    }
+    m.draw_passes(frame, small.x, small.y, moving);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, m.small_fbo);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target));
+    glViewport(0, 0, width, height);
+    glBlitFramebuffer(0, 0, small.x, small.y, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
+}
+
+// The passes of one frame into the bound framebuffer's (0, 0, width, height).
+void Renderer::Impl::draw_passes(const FrameView& frame, int width, int height, bool moving) {
     const float aspect = static_cast<float>(width) / static_cast<float>(std::max(height, 1));
     const Pass p{frame.camera.projection(aspect) * frame.camera.view(), frame.camera.eye, width,
                  height, 1.0f / std::tan(glm::radians(frame.camera.fovy_deg) / 2)};
-    if (m.settings.exposure != m.baked_exposure) m.bake_cloth_light();
-    m.begin_frame(width, height);
+    begin_frame(width, height);
     // 1. The room and the table: from the cache when it can be (its copy overwrites colour and
-    // depth, so no clear), else cleared and drawn.
-    if (!(m.settings.cache_table && m.use_cache(frame, width, height, p.view_proj))) {
+    // depth, so no clear), else cleared and drawn. A moving camera would remake it every frame.
+    if (!(settings.cache_table && !moving && use_cache(frame, width, height, p.view_proj))) {
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        m.draw_table(p.view_proj, p.eye);
+        draw_table(p.view_proj, p.eye);
     }
-    const std::optional<CueAxis> cue = m.cue_axis_of(frame);
+    const std::optional<CueAxis> cue = cue_axis_of(frame);
     // 2. Soft shadows and contact occlusion, multiplied onto the cloth and the cushions.
-    if (m.settings.shadows) m.draw_shadows(frame, cue, p);
+    if (settings.shadows) draw_shadows(frame, cue, p);
     // 3. On the cloth: the aim guide, the kitchen and the ball-in-hand ring; the tray.
-    m.draw_overlays(frame, p);
+    draw_overlays(frame, p);
     // 4. The balls (the tray's too), then the ball in hand, see-through.
-    m.draw_balls(frame, p);
+    draw_balls(frame, p);
     // 5. The cue stick.
-    if (cue) m.draw_solid(cue_mesh(*cue), true, 1.0f, p.view_proj, p.eye);
+    if (cue) draw_solid(cue_mesh(*cue), true, 1.0f, p.view_proj, p.eye);
     glBindVertexArray(0);
+}
+
+bool Renderer::Impl::camera_moved(const FrameView& frame, int width, int height) {
+    const Camera& c = frame.camera;
+    std::vector<float> view = {static_cast<float>(width), static_cast<float>(height), c.fovy_deg,
+                               c.near_m, c.far_m};
+    for (const glm::vec3& v : {c.eye, c.target, c.up}) view.insert(view.end(), {v.x, v.y, v.z});
+    const bool moved = !last_view.empty() && view != last_view;
+    last_view = view;
+    return moved;
+}
+
+bool Renderer::Impl::bind_small_target(glm::ivec2 size) {
+    if (small_fbo && size == small_size) {
+        glBindFramebuffer(GL_FRAMEBUFFER, small_fbo);
+        return true;
+    }
+    free_small_target();
+    glGenFramebuffers(1, &small_fbo);
+    glGenRenderbuffers(1, &small_colour);
+    glGenRenderbuffers(1, &small_depth);
+    glBindRenderbuffer(GL_RENDERBUFFER, small_colour);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, size.x, size.y);
+    glBindRenderbuffer(GL_RENDERBUFFER, small_depth);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, size.x, size.y);
+    glBindFramebuffer(GL_FRAMEBUFFER, small_fbo);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, small_colour);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, small_depth);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+        free_small_target();
+        return false;
+    }
+    small_size = size;
+    return true;
+}
+
+void Renderer::Impl::free_small_target() {
+    if (small_fbo) glDeleteFramebuffers(1, &small_fbo);
+    if (small_colour) glDeleteRenderbuffers(1, &small_colour);
+    if (small_depth) glDeleteRenderbuffers(1, &small_depth);
+    small_fbo = small_colour = small_depth = 0;
+    small_size = {0, 0};
 }
 
 void Renderer::Impl::begin_frame(int width, int height) {
@@ -586,6 +673,8 @@ void Renderer::Impl::begin_frame(int width, int height) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
     glDisable(GL_CULL_FACE);
+    glCullFace(GL_BACK);  // used for the room only
+    glFrontFace(GL_CCW);
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
 }

@@ -76,6 +76,11 @@ struct RenderSettings {
     /// overhead camera is fixed). Used only when the bound framebuffer is an FBO with a
     /// 24-bit depth attachment (OffscreenTarget); otherwise the table is drawn every frame.
     bool cache_table = true;
+    /// While the camera moves (it differs from the previous frame's: aiming in the cue-ball
+    /// view, a transition), the frame is drawn at this fraction of the size, without the table
+    /// cache, and scaled up (bilinear) into the bound framebuffer's colour; a still camera is
+    /// drawn at full size. 1: always full size.
+    float moving_scale = 0.75f;
     /// TrueType font the ball numbers are rasterized from at start-up; the Renderer's
     /// constructor throws std::runtime_error when it is missing.
     std::string number_font = kDefaultNumberFont;

@@ -32,9 +32,14 @@ struct Lamp {
 std::vector<Lamp> table_lamps(const physics::Table& table);
 
 /// The room's triangles, lit per vertex by the room program: floor, walls (panelled below),
-/// ceiling, the table's underside and legs, the lamps' shades and the bar they hang from. Large
-/// faces are cut in cells of about `cell` m so the light varies across them.
-std::vector<SolidVertex> room_mesh(const physics::Table& table, float cell = 0.25f);
+/// ceiling, the table's underside and legs. Every face is wound counter-clockwise seen from the
+/// side it faces (into the room; out of the legs), so with back faces culled a camera outside
+/// the room or above the ceiling sees through them. Large faces are cut in cells of about
+/// `cell` m so the light varies across them.
+std::vector<SolidVertex> room_mesh(const physics::Table& table, float cell = 0.5f);
+/// The lamps' shades, the bar they hang from and its rods to the ceiling (drawn only for an eye
+/// below the shades: from above they would hide the table).
+std::vector<SolidVertex> fixtures_mesh(const physics::Table& table);
 /// The lamps' glowing openings (discs facing down), drawn unlit.
 std::vector<SolidVertex> lamp_glow_mesh(const physics::Table& table);
 

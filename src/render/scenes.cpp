@@ -167,7 +167,7 @@ DemoScene room_scene(float aspect) {
     // From a corner of the room, standing: the table, its legs, the lamps and the walls.
     const float L = static_cast<float>(s.table.length()), W = static_cast<float>(s.table.width());
     s.camera.target = {0.5f * L, 0.5f * W, -0.15f};
-    s.camera.eye = {-1.3f, -1.25f, 0.95f};
+    s.camera.eye = {-1.3f, -1.25f, 0.9f};
     s.camera.up = {0, 0, 1};
     s.camera.fovy_deg = 50.0f;
     s.camera.near_m = 0.05f;
