@@ -352,7 +352,7 @@ void main() {
         // The rail tops: the baked diffuse light and the lamps' highlights, view-dependent.
         vec4 baked = texture(u_cloth_light, (v_pos.xy - u_bake_rect.xy) / u_bake_rect.zw);
         if (baked.a < 0.1) discard;  // a pocket hole
-        c = baked.rgb * baked.rgb + lamps_specular(v_pos, vec3(0.0, 0.0, 1.0), 6, 0.25 * baked.a);
+        c = baked.rgb * baked.rgb + lamps_specular(v_pos, vec3(0.0, 0.0, 1.0), 7, 0.06 * baked.a);
         o_colour = vec4(tone_map(c), 1.0);  // above the cloth: no fog
         return;
     }

@@ -57,8 +57,8 @@ TEST(CueBallCamera, NeverInsideARailOrTheRoomAndSeesTheBallOverTheRail) {
         for (int k = 0; k < 16; ++k)
             for (float distance : {0.3f, 0.75f, 2.5f}) {
                 const float heading = static_cast<float>(k) * std::numbers::pi_v<float> / 8;
-                const render::Camera cam = render::cue_ball_camera(
-                    t, R, {c, heading, distance, 0.12f + 0.21f * distance});
+                const render::Camera cam =
+                    render::cue_ball_camera(t, R, {c, heading, distance, 0.12f + 0.21f * distance});
                 const glm::vec3 e = cam.eye;
                 EXPECT_GT(e.x, room.lo.x + 0.25f);
                 EXPECT_LT(e.x, room.hi.x - 0.25f);
