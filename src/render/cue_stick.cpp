@@ -137,11 +137,11 @@ std::vector<SolidVertex> cue_mesh(const CueAxis& axis) {
     add_lathe(out, at(-0.0015f), at(0.0f), 0.0035f, kSections[0].r0, kTip, kTip, 24);
     for (const Section& k : kSections) {
         if (k.points == 0) {
-            add_lathe(out, at(k.s0), at(k.s1), k.r0, k.r1, k.c0, k.c1, 24);
+            add_lathe(out, at(k.s0), at(k.s1), k.r0, k.r1, k.c0, k.c1, 16);
             continue;
         }
         // Inlaid points, in rows whose inlay share steps from share0 to share1.
-        const int rows = 8;
+        const int rows = 5;
         for (int r = 0; r < rows; ++r) {
             const float u0 = static_cast<float>(r) / rows, u1 = static_cast<float>(r + 1) / rows;
             const float share = k.share0 + (k.share1 - k.share0) * 0.5f * (u0 + u1);

@@ -12,15 +12,18 @@ namespace {
 constexpr glm::vec3 kLeather{0.22f, 0.13f, 0.08f};
 constexpr glm::vec3 kNetDark{0.06f, 0.05f, 0.045f}, kNetString{0.45f, 0.38f, 0.28f};
 
-/// A band round the pocket's axis from ring (r0, z0) to ring (r1, z1), 48 facets; normals
+/// Facets round a pocket: few, since llvmpipe pays for every triangle even where the cloth
+/// hides it.
+constexpr int kFacets = 24;
+
+/// A band round the pocket's axis from ring (r0, z0) to ring (r1, z1), kFacets facets; normals
 /// toward the axis; colour per facet from `colour(facet)`.
 template <typename Colour>
 void add_band(std::vector<SolidVertex>& out, glm::vec2 c, float r0, float r1, const float* z0,
               const float* z1, Colour colour) {
-    const int steps = 48;
-    for (int i = 0; i < steps; ++i) {
-        const float a0 = 6.2831853f * static_cast<float>(i) / steps;
-        const float a1 = 6.2831853f * static_cast<float>(i + 1) / steps;
+    for (int i = 0; i < kFacets; ++i) {
+        const float a0 = 6.2831853f * static_cast<float>(i) / kFacets;
+        const float a1 = 6.2831853f * static_cast<float>(i + 1) / kFacets;
         const glm::vec2 d0{std::cos(a0), std::sin(a0)}, d1{std::cos(a1), std::sin(a1)};
         const glm::vec3 n0{-d0, 0.3f}, n1{-d1, 0.3f};
         const glm::vec3 col = colour(i);
@@ -39,9 +42,9 @@ std::vector<SolidVertex> pocket_mesh(const physics::Table& table) {
     for (const PocketHole& h : pocket_holes(table)) {
         // The liner rises to the rail top where the hole cuts into the cushion and the rail,
         // and starts at the cloth where it cuts the slate.
-        float top[49], liner_bottom[49];
-        for (int i = 0; i <= 48; ++i) {
-            const float a = 6.2831853f * static_cast<float>(i) / 48.0f;
+        float top[kFacets + 1], liner_bottom[kFacets + 1];
+        for (int i = 0; i <= kFacets; ++i) {
+            const float a = 6.2831853f * static_cast<float>(i) / kFacets;
             const glm::vec2 p = h.centre + h.radius * glm::vec2(std::cos(a), std::sin(a));
             const bool under_rail = p.x < 0.0f || p.x > L || p.y < 0.0f || p.y > W;
             top[i] = under_rail ? d.rail_height : 0.0f;
@@ -50,14 +53,12 @@ std::vector<SolidVertex> pocket_mesh(const physics::Table& table) {
         add_band(out, h.centre, h.radius, h.radius, top, liner_bottom,
                  [](int) { return kLeather; });
         // The net: a bag narrowing to its bottom, its strings in a diamond pattern.
-        const float rows[4][2] = {{1.0f, -kLinerDepth},
-                                  {0.85f, -0.5f * (kLinerDepth + kNetDepth)},
-                                  {0.55f, -kNetDepth + 0.015f},
-                                  {0.0f, -kNetDepth}};
-        for (int r = 0; r < 3; ++r) {
-            float z0[49], z1[49];
-            std::fill(z0, z0 + 49, rows[r][1]);
-            std::fill(z1, z1 + 49, rows[r + 1][1]);
+        const float rows[3][2] = {
+            {1.0f, -kLinerDepth}, {0.75f, -kNetDepth + 0.02f}, {0.0f, -kNetDepth}};
+        for (int r = 0; r < 2; ++r) {
+            float z0[kFacets + 1], z1[kFacets + 1];
+            std::fill(z0, z0 + kFacets + 1, rows[r][1]);
+            std::fill(z1, z1 + kFacets + 1, rows[r + 1][1]);
             add_band(out, h.centre, rows[r][0] * h.radius, rows[r + 1][0] * h.radius, z0, z1,
                      [r](int i) { return (i + r) % 2 == 0 ? kNetString : kNetDark; });
         }

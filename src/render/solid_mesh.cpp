@@ -26,15 +26,16 @@ void add_sectors(std::vector<SolidVertex>& out, glm::vec3 a, glm::vec3 b, float 
     const glm::vec3 helper = std::abs(axis.z) < 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0);
     const glm::vec3 u = glm::normalize(glm::cross(axis, helper)), v = glm::cross(axis, u);
     const float step = 6.2831853f / static_cast<float>(sectors);
-    // Each sector: base, inlay, base, as angular bands; each band 3 facets.
+    // Each sector: base, inlay, base, as angular bands; the base bands 2 facets, the inlay 1.
     const float edges[4] = {0.0f, 0.5f - 0.5f * share, 0.5f + 0.5f * share, 1.0f};
     for (int k = 0; k < sectors; ++k) {
         for (int band = 0; band < 3; ++band) {
             const glm::vec3 colour = band == 1 ? inlay : base;
             const float width = edges[band + 1] - edges[band];
-            for (float f = 0.0f; f < 3.0f; f += 1.0f) {
-                const float w0 = edges[band] + width * f / 3.0f;
-                const float w1 = edges[band] + width * (f + 1.0f) / 3.0f;
+            const float facets = band == 1 ? 1.0f : 2.0f;
+            for (float f = 0.0f; f < facets; f += 1.0f) {
+                const float w0 = edges[band] + width * f / facets;
+                const float w1 = edges[band] + width * (f + 1.0f) / facets;
                 const float t0 = step * (static_cast<float>(k) + w0);
                 const float t1 = step * (static_cast<float>(k) + w1);
                 const glm::vec3 n0 = std::cos(t0) * u + std::sin(t0) * v,
