@@ -12,6 +12,9 @@ Prints one JSON line per case:
                    camera moves every frame)
 and the start-up: from exec to the first frame shown (the status file's first write), median of
 the runs. Medians of the HUD's 0.25 s samples; a software renderer only (GALLIUM_HUD is Mesa's).
+cpu_ms_per_frame: the game process's CPU time (all its threads, llvmpipe's included) over the
+measured stretch divided by the frames shown in it, a figure that depends less on what else the
+machine runs than the frame rate does (compare builds by it on a busy machine).
 """
 import json
 import os
@@ -66,6 +69,11 @@ class Run:
             time.sleep(0.05)
         raise SystemExit(f"timed out; last status {self.status()}")
 
+    def cpu_seconds(self):
+        with open(f"/proc/{self.proc.pid}/stat") as f:
+            fields = f.read().rsplit(")", 1)[1].split()
+        return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
     def new_samples(self):
         """The HUD's samples written since the last call."""
         try:
@@ -97,10 +105,13 @@ def measure_break(exe, work, view):
         r.wait(lambda s: s["shots"] == 1, 10)
         time.sleep(0.6)  # the stroke and the first samples' partial period
         r.new_samples()
+        cpu0 = r.cpu_seconds()
         end = time.time() + 4.0
         while time.time() < end and r.status()["busy"]:
             time.sleep(0.1)
-        return r.new_samples()[:-1], r.first_frame  # the last may straddle the balls' stop
+        cpu = r.cpu_seconds() - cpu0
+        samples = r.new_samples()
+        return samples[:-1], r.first_frame, cpu, sum(samples) * HUD_PERIOD
     finally:
         r.close()
 
@@ -121,8 +132,11 @@ def measure_aim(exe, work):
         mover = subprocess.Popen(["xdotool", *chain])
         time.sleep(1.0)
         r.new_samples()
+        cpu0 = r.cpu_seconds()
         mover.wait(timeout=60)
-        return r.new_samples()[:-1], r.first_frame
+        cpu = r.cpu_seconds() - cpu0
+        samples = r.new_samples()
+        return samples[:-1], r.first_frame, cpu, sum(samples) * HUD_PERIOD
     finally:
         r.close()
 
@@ -136,10 +150,11 @@ def main():
     for name, fn in [("break_overhead", lambda w: measure_break(exe, w, "overhead")),
                      ("break_cueball", lambda w: measure_break(exe, w, "cueball")),
                      ("aim_cueball", lambda w: measure_aim(exe, w))]:
-        samples, first = fn(os.path.join(work, name))
+        samples, first, cpu, frames = fn(os.path.join(work, name))
         starts.append(first)
         print(json.dumps({"case": name, "fps_median": round(statistics.median(samples), 1),
-                          "fps_min": round(min(samples), 1), "samples": len(samples)}), flush=True)
+                          "fps_min": round(min(samples), 1), "samples": len(samples),
+                          "cpu_ms_per_frame": round(1000 * cpu / max(frames, 1), 1)}), flush=True)
     print(json.dumps({"case": "first_frame", "seconds_median": round(statistics.median(starts), 3),
                       "runs": [round(s, 3) for s in starts]}), flush=True)
 

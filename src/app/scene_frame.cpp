@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "render/pockets.hpp"
+
 namespace app {
 
 namespace {
@@ -10,6 +12,26 @@ namespace {
 // How far the cue is drawn back from the ball at a Power slider position (unit: m).
 float pull_back(double power) {
     return static_cast<float>(0.015 + 0.22 * power);
+}
+
+// Balls that dropped in the last 0.6 s of the shot, falling into their pocket.
+void add_dropping_balls(const Controller& c, double R, std::vector<render::BallView>& out) {
+    if (!c.moving() || !c.playback().has_shot() || c.playback().time() < 0.0) return;
+    const double t = c.playback().time();
+    const physics::Table& table = c.session().table();
+    for (const physics::Event& e : c.playback().shot().events()) {
+        if (e.type != physics::EventType::pocket || e.time > t || t - e.time > 0.6) continue;
+        const physics::EventBall& b = e.balls[0];
+        physics::BallState state;
+        state.id = b.id;
+        state.pos = b.pos;
+        render::BallView v = render::ball_view(state, R, c.orientations().of(b.id));
+        v.centre =
+            render::dropping_ball_centre(table, static_cast<float>(R),
+                                         {static_cast<float>(b.pos.x), static_cast<float>(b.pos.y)},
+                                         static_cast<float>(t - e.time));
+        out.push_back(v);
+    }
 }
 
 }  // namespace
@@ -31,6 +53,7 @@ SceneFrame build_scene(const Controller& c, bool aim_guide,
     const double R = c.session().config().params.ball_radius;
     for (const physics::BallState& b : c.balls_now())
         f.balls.push_back(render::ball_view(b, R, c.orientations().of(b.id)));
+    add_dropping_balls(c, R, f.balls);
     for (const game::Pocketed& p : c.session().pocketed()) f.tray.push_back(p.ball);
     const AimPreview* preview = c.preview();
     const bool at_table = c.session().phase() == game::Phase::shoot && !c.moving();
