@@ -130,6 +130,16 @@ float drawn_cue_elevation(const physics::Table& table, float ball_radius, glm::v
                     rail_forced_elevation(table, ball_radius, cue_ball, heading, tip_offset));
 }
 
+glm::vec4 cue_shadow_rect(const physics::Table& table, const CueAxis& axis) {
+    const glm::vec3 a = axis.tip, b = axis.tip - kCueLength * axis.dir;
+    const float reach = 0.05f + 1.6f * std::max(a.z, b.z);
+    const float L = static_cast<float>(table.length()), W = static_cast<float>(table.width());
+    const float in = table_dims(table).cushion_width;
+    return {std::max(std::min(a.x, b.x) - reach, -in), std::max(std::min(a.y, b.y) - reach, -in),
+            std::min(std::max(a.x, b.x) + reach, L + in),
+            std::min(std::max(a.y, b.y) + reach, W + in)};
+}
+
 std::vector<SolidVertex> cue_mesh(const CueAxis& axis) {
     std::vector<SolidVertex> out;
     const auto at = [&](float s) { return axis.tip - s * axis.dir; };

@@ -41,6 +41,11 @@ float rail_forced_elevation(const physics::Table& table, float ball_radius, glm:
 float drawn_cue_elevation(const physics::Table& table, float ball_radius, glm::vec2 cue_ball,
                           float heading, float chosen, glm::vec2 tip_offset = {0.0f, 0.0f});
 
+/// Where the cue's shadow is drawn on the cloth (x0, y0, x1, y1; unit: m): the cue's footprint
+/// widened by how far the lamps throw the shadow of its highest point, cut to the cloth and the
+/// cushions, so that it never falls beyond the table. Empty (x0 >= x1) when off the table.
+glm::vec4 cue_shadow_rect(const physics::Table& table, const CueAxis& axis);
+
 /// The cue's triangles along `axis`, from the tip back.
 std::vector<SolidVertex> cue_mesh(const CueAxis& axis);
 

@@ -764,16 +764,10 @@ std::optional<glm::ivec4> Renderer::Impl::screen_box(const Pass& p, glm::vec3 lo
     return glm::ivec4(x0, y0, x1 - x0, y1 - y0);
 }
 
-// The cue's shadow: over the cue's footprint, widened by how far the lamps throw the shadow of
-// its highest point, and cut to the cloth and the cushions (never beyond the table).
+// The cue's shadow, within cue_shadow_rect (never beyond the table).
 void Renderer::Impl::draw_cue_shadow(const CueAxis& cue, const Pass& p) {
     const glm::vec3 a = cue.tip, b = cue.tip - kCueLength * cue.dir;
-    const float reach = 0.05f + 1.6f * std::max(a.z, b.z);
-    const float L = static_cast<float>(table.length()), W = static_cast<float>(table.width());
-    const float in = dims.cushion_width;
-    const glm::vec4 rect{
-        std::max(std::min(a.x, b.x) - reach, -in), std::max(std::min(a.y, b.y) - reach, -in),
-        std::min(std::max(a.x, b.x) + reach, L + in), std::min(std::max(a.y, b.y) + reach, W + in)};
+    const glm::vec4 rect = cue_shadow_rect(table, cue);
     if (rect.x >= rect.z || rect.y >= rect.w) return;
     set_common(cue_shadow_prog, p.view_proj, p.eye);
     glUniform4fv(glGetUniformLocation(cue_shadow_prog, "u_rect"), 1, glm::value_ptr(rect));

@@ -182,6 +182,31 @@ TEST(CueStick, ARailBehindTheBallRaisesTheButtOverIt) {
     }
 }
 
+TEST(CueStick, ItsShadowNeverFallsBeyondTheTable) {
+    const physics::Table& t = nine_foot();
+    const render::TableDims d = render::table_dims(t);
+    const float L = static_cast<float>(t.length()), W = static_cast<float>(t.width());
+    int drawn = 0;
+    for (const glm::vec2 c : places(t))
+        for (int k = 0; k < 8; ++k)
+            for (float elevation : {0.0f, 0.44f, 1.0f}) {
+                const float heading = static_cast<float>(k) * std::numbers::pi_v<float> / 4;
+                const render::CueAxis a =
+                    render::cue_axis(c, R, heading, elevation, {0.0f, 0.0f}, 0.0f);
+                const glm::vec4 r = render::cue_shadow_rect(t, a);
+                if (r.x >= r.z || r.y >= r.w) continue;
+                ++drawn;
+                EXPECT_GE(r.x, -d.cushion_width - 1e-6f);
+                EXPECT_GE(r.y, -d.cushion_width - 1e-6f);
+                EXPECT_LE(r.z, L + d.cushion_width + 1e-6f);
+                EXPECT_LE(r.w, W + d.cushion_width + 1e-6f);
+                // It still covers the cue's tip, on the ball over the cloth.
+                EXPECT_LE(r.x, a.tip.x);
+                EXPECT_GE(r.z, a.tip.x);
+            }
+    EXPECT_EQ(drawn, 20 * 8 * 3);
+}
+
 TEST(Pockets, TheClothHasHolesWhereThePocketsAre) {
     const physics::Table& t = nine_foot();
     const render::TableMesh mesh = render::build_table_mesh(t);
