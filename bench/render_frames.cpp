@@ -1,8 +1,12 @@
 // coolaaber-render-bench: renders the mid-game scene (the break, balls moving, shadows and
 // fog on) offscreen and prints one JSON line: frame-time median and 95th percentile, fps.
 //   coolaaber-render-bench [--size 1280x720] [--frames 300] [--samples 4] [--scene mid_game]
+//                          [--no-table-cache] [--moving-camera] [--moving-scale X]
 //                          [--png out.png]   (scenes: mid_game, racked, mid_roll, cue_view,
-//                          ball_in_hand, aim_overhead, cushion)
+//                          ball_in_hand, aim_overhead, cushion, rail_view, raised_cue, pocket,
+//                          room)
+// --moving-camera turns the eye a little every frame (aiming in the cue-ball view): the frame
+// is then drawn at --moving-scale of the size (RenderSettings::moving_scale) and scaled up.
 #include <epoxy/gl.h>
 
 #include <algorithm>
@@ -25,6 +29,8 @@ namespace {
 struct Options {
     int width = 1280, height = 720, frames = 300, samples = 4;
     bool cache_table = true;
+    bool moving_camera = false;  ///< the eye turns round the target a little every frame
+    float moving_scale = render::RenderSettings{}.moving_scale;
     std::string png, scene = "mid_game";
 };
 
@@ -46,6 +52,10 @@ std::optional<Options> parse(int argc, char** argv) {
             o.samples = std::max(1, std::atoi(argv[++i]));
         } else if (a == "--no-table-cache") {
             o.cache_table = false;
+        } else if (a == "--moving-camera") {
+            o.moving_camera = true;
+        } else if (a == "--moving-scale" && more) {
+            o.moving_scale = std::clamp(static_cast<float>(std::atof(argv[++i])), 0.1f, 1.0f);
         } else if (a == "--scene" && more) {
             o.scene = argv[++i];
         } else if (a == "--png" && more) {
@@ -53,7 +63,8 @@ std::optional<Options> parse(int argc, char** argv) {
         } else {
             std::fprintf(stderr,
                          "usage: coolaaber-render-bench [--size WxH] [--frames N] [--samples N] "
-                         "[--scene NAME] [--no-table-cache] [--png FILE]\n");
+                         "[--scene NAME] [--no-table-cache] [--moving-camera] "
+                         "[--moving-scale X] [--png FILE]\n");
             return std::nullopt;
         }
     }
@@ -69,9 +80,13 @@ render::DemoScene scene_named(const std::string& name, float aspect, int k, int 
     if (name == "ball_in_hand") return render::ball_in_hand_scene(aspect);
     if (name == "aim_overhead") return render::aim_overhead_scene(aspect);
     if (name == "cushion") return render::cushion_scene(aspect);
+    if (name == "rail_view") return render::rail_view_scene(aspect);
+    if (name == "raised_cue") return render::raised_cue_scene(aspect);
+    if (name == "pocket") return render::pocket_scene(aspect);
+    if (name == "room") return render::room_scene(aspect);
     throw std::invalid_argument(
-        "--scene: expected mid_game, racked, mid_roll, cue_view, ball_in_hand, aim_overhead or "
-        "cushion");
+        "--scene: expected mid_game, racked, mid_roll, cue_view, ball_in_hand, aim_overhead, "
+        "cushion, rail_view, raised_cue, pocket or room");
 }
 
 // Draws the scenes in turn (after 5 frames of warm-up); the frame times (unit: ms), sorted.
@@ -79,13 +94,21 @@ std::vector<double> frame_times(const Options& o, const std::vector<render::Demo
                                 render::OffscreenTarget& target) {
     render::RenderSettings settings;
     settings.cache_table = o.cache_table;
+    settings.moving_scale = o.moving_scale;
     render::Renderer renderer(scenes.front().table, scenes.front().ball_radius, settings);
     std::vector<double> ms;
     for (int f = 0; f < o.frames + 5; ++f) {
         const auto start = std::chrono::steady_clock::now();
         target.bind();
-        renderer.draw(scenes[static_cast<std::size_t>(f) % scenes.size()].frame(), o.width,
-                      o.height);
+        render::FrameView view = scenes[static_cast<std::size_t>(f) % scenes.size()].frame();
+        if (o.moving_camera) {
+            // A fifth of a degree a frame round the vertical through the target, as when aiming.
+            const glm::vec3 arm = view.camera.eye - view.camera.target;
+            const float a = 0.0035f * static_cast<float>(f), c = std::cos(a), s = std::sin(a);
+            view.camera.eye =
+                view.camera.target + glm::vec3(c * arm.x - s * arm.y, s * arm.x + c * arm.y, arm.z);
+        }
+        renderer.draw(view, o.width, o.height);
         target.resolve();
         glFinish();
         const auto end = std::chrono::steady_clock::now();
@@ -115,9 +138,11 @@ int main(int argc, char** argv) {
         const double p95 = ms[std::min(ms.size() - 1, ms.size() * 95 / 100)];
         std::printf(
             "{\"size\":\"%dx%d\",\"frames\":%d,\"samples\":%d,\"table_cache\":%s,"
+            "\"moving_camera\":%s,\"moving_scale\":%.2f,"
             "\"renderer\":\"%s\",\"median_ms\":%.3f,\"p95_ms\":%.3f,\"fps\":%.1f}\n",
             o->width, o->height, o->frames, target.samples(), o->cache_table ? "true" : "false",
-            context.renderer_name().c_str(), median, p95, 1000.0 / median);
+            o->moving_camera ? "true" : "false", o->moving_scale, context.renderer_name().c_str(),
+            median, p95, 1000.0 / median);
     } catch (const std::invalid_argument& e) {
         std::fprintf(stderr, "%s\n", e.what());
         return 2;

@@ -86,7 +86,9 @@ struct Table {
         if (controller.moving()) return;
         const float heading =
             static_cast<float>(controller.aim().heading_deg * std::numbers::pi / 180.0);
-        rig.set_anchor(cue_ball_at(controller), heading, true, last_camera);
+        const float elevation =
+            static_cast<float>(controller.aim().elevation_deg * std::numbers::pi / 180.0);
+        rig.set_anchor(cue_ball_at(controller), heading, true, last_camera, elevation);
     }
 
     void set_power(double power) {
@@ -298,13 +300,16 @@ int run_window(const AppOptions& options) {
                                  false};  // a press this frame, even if released again
         int sound_serial = t.controller.shot_serial();
         int warm_frames = 2;
+        bool drew_moving = false;  // the last frame was drawn for a moving camera (smaller, 1×)
         long frames = 0;
         auto last = std::chrono::steady_clock::now();
         auto over_panel = [&](double x) { return x >= painter.view_width(); };
 
         while (!t.exit_requested) {
             // ---- Events: wait for one when nothing moves
+            // A camera that has just stopped gets one more frame, drawn in full.
             const bool animating = t.controller.moving() || t.rig.animating() || warm_frames > 0 ||
+                                   drew_moving ||
                                    (t.controller.busy() && !t.controller.computer_thinking());
             SDL_Event e;
             bool have = false;
@@ -418,6 +423,7 @@ int run_window(const AppOptions& options) {
             t.last_camera = t.camera(aspect);
             const bool camera_moving = t.rig.animating() || previous.eye != t.last_camera.eye ||
                                        previous.target != t.last_camera.target;
+            drew_moving = camera_moving;
             sound.set_listener(listener_of(t.last_camera));
             const SceneFrame scene =
                 build_scene(t.controller, t.setup.settings.aim_guide, input.dragged_to());

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/cue_stick.hpp"
+
 namespace app {
 
 namespace {
@@ -25,11 +27,12 @@ void CameraRig::next_view(const render::Camera& current) {
 }
 
 void CameraRig::set_anchor(glm::vec2 cue_ball, float heading, bool jump,
-                           const render::Camera& current) {
+                           const render::Camera& current, float cue_elevation) {
     if (jump && mode_ == CameraMode::cue_ball && glm::distance(cue_ball, cue_) > 1e-3f)
         begin_blend(current);
     cue_ = cue_ball;
     heading_ = heading;
+    cue_elevation_ = cue_elevation;
 }
 
 void CameraRig::zoom(float steps) {
@@ -65,8 +68,10 @@ render::Camera CameraRig::target_camera(const physics::Table& table, float aspec
             return c;
         }
         case CameraMode::cue_ball:
-            return render::cue_ball_camera(cue_, heading_, cue_distance_,
-                                           0.12f + 0.21f * cue_distance_);
+            return render::cue_ball_camera(
+                table, ball_radius_,
+                {cue_, heading_, cue_distance_, 0.12f + 0.21f * cue_distance_,
+                 render::drawn_cue_elevation(table, ball_radius_, cue_, heading_, cue_elevation_)});
         case CameraMode::free: {
             const glm::vec3 centre{static_cast<float>(table.length()) / 2,
                                    static_cast<float>(table.width()) / 2, 0.0f};

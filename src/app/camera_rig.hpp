@@ -23,8 +23,12 @@ class CameraRig {
     /// The Change View button: overhead → cue ball → overhead (free → overhead).
     void next_view(const render::Camera& current);
     /// Where the cue-ball view looks from: the cue ball and the aim (unit: m, rad). `jump`:
-    /// the cue ball moved to a new place (a new turn), so the view glides there.
-    void set_anchor(glm::vec2 cue_ball, float heading, bool jump, const render::Camera& current);
+    /// the cue ball moved to a new place (a new turn), so the view glides there. `cue_elevation`:
+    /// the cue's elevation as drawn (unit: rad); a raised cue raises the view.
+    void set_anchor(glm::vec2 cue_ball, float heading, bool jump, const render::Camera& current,
+                    float cue_elevation = 0.0f);
+    /// The balls' radius (unit: m; default a standard 57.15 mm ball).
+    void set_ball_radius(float radius) { ball_radius_ = radius; }
     /// Mouse wheel: positive steps zoom in.
     void zoom(float steps);
     /// Free view: turn by (dx, dy) pixels of mouse motion.
@@ -41,6 +45,8 @@ class CameraRig {
     CameraMode mode_;
     glm::vec2 cue_{0.635f, 0.635f};
     float heading_ = 0.0f;
+    float cue_elevation_ = 0.0f;  ///< (unit: rad)
+    float ball_radius_ = 0.028575f;
     float overhead_zoom_ = 1.0f;  ///< 1: the whole table; larger: closer
     float cue_distance_ = 0.75f;  ///< (unit: m)
     float yaw_ = 0.9f, pitch_ = 0.75f, orbit_distance_ = 2.6f;  ///< free view (unit: rad, m)

@@ -9,6 +9,7 @@
 #include "app/plain_words.hpp"
 #include "app/seats.hpp"
 #include "game/stroke_noise.hpp"
+#include "render/pockets.hpp"
 #include "rules/eight_ball.hpp"
 #include "rules/judge.hpp"
 
@@ -249,7 +250,8 @@ std::vector<int> Controller::tray() const {
     for (const game::Pocketed& p : session_.pocketed()) out.push_back(p.ball);
     if (!playback_.moving()) return out;
     for (const physics::Event& e : playback_.shot().events())
-        if (e.type == physics::EventType::pocket && e.time > playback_.time())
+        if (e.type == physics::EventType::pocket &&
+            e.time + render::kDropSeconds > playback_.time())  // still dropping, or to come
             std::erase(out, e.ball(0));
     return out;
 }

@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "app/aim_guide.hpp"
+#include "render/pockets.hpp"
 
 namespace app {
 
@@ -12,6 +13,27 @@ namespace {
 // How far the cue is drawn back from the ball at a Power slider position (unit: m).
 float pull_back(double power) {
     return static_cast<float>(0.015 + 0.22 * power);
+}
+
+// Balls that dropped in the last 0.6 s of the shot, falling into their pocket.
+void add_dropping_balls(const Controller& c, double R, std::vector<render::BallView>& out) {
+    if (!c.moving() || !c.playback().has_shot() || c.playback().time() < 0.0) return;
+    const double t = c.playback().time();
+    const physics::Table& table = c.session().table();
+    for (const physics::Event& e : c.playback().shot().events()) {
+        if (e.type != physics::EventType::pocket || e.time > t || t - e.time > render::kDropSeconds)
+            continue;
+        const physics::EventBall& b = e.balls[0];
+        physics::BallState state;
+        state.id = b.id;
+        state.pos = b.pos;
+        render::BallView v = render::ball_view(state, R, c.orientations().of(b.id));
+        v.centre =
+            render::dropping_ball_centre(table, static_cast<float>(R),
+                                         {static_cast<float>(b.pos.x), static_cast<float>(b.pos.y)},
+                                         static_cast<float>(t - e.time));
+        out.push_back(v);
+    }
 }
 
 }  // namespace
@@ -33,6 +55,7 @@ SceneFrame build_scene(const Controller& c, AimGuide aim_guide,
     const double R = c.session().config().params.ball_radius;
     for (const physics::BallState& b : c.balls_now())
         f.balls.push_back(render::ball_view(b, R, c.orientations().of(b.id)));
+    add_dropping_balls(c, R, f.balls);
     f.tray = c.tray();
     const AimPreview* preview = c.preview();
     const bool at_table = c.session().phase() == game::Phase::shoot && !c.moving();
@@ -45,6 +68,7 @@ SceneFrame build_scene(const Controller& c, AimGuide aim_guide,
         k.heading = static_cast<float>(a.heading_deg * std::numbers::pi / 180.0);
         k.elevation = static_cast<float>(a.elevation_deg * std::numbers::pi / 180.0);
         k.pull_back = pull_back(a.power);
+        k.tip_offset = {static_cast<float>(a.side), static_cast<float>(a.top)};
         f.cue = k;
         const float Rf = static_cast<float>(R);
         f.aim = guide_view(*preview, aim_guide, !c.aim_foul().empty(), Rf);
@@ -66,6 +90,7 @@ SceneFrame build_scene(const Controller& c, AimGuide aim_guide,
             k.cue_ball = {static_cast<float>(at->second.x), static_cast<float>(at->second.y)};
             k.heading = static_cast<float>(r.stroke.heading_deg * std::numbers::pi / 180.0);
             k.elevation = static_cast<float>(r.stroke.elevation_deg * std::numbers::pi / 180.0);
+            k.tip_offset = {static_cast<float>(r.stroke.side), static_cast<float>(r.stroke.top)};
             k.pull_back = pull_back(power_of_speed(r.stroke.speed)) *
                           static_cast<float>(-c.playback().time() / stroke_lead);
             f.cue = k;

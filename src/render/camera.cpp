@@ -4,6 +4,7 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "render/room.hpp"
 #include "render/table_mesh.hpp"
 
 namespace render {
@@ -39,15 +40,71 @@ Camera overhead_camera(const physics::Table& table, float aspect) {
     return c;
 }
 
-Camera cue_ball_camera(glm::vec2 cue_ball, float heading, float distance, float height) {
+namespace {
+
+/// How far from `p` along `d` (a unit vector) the ray leaves the box [lo, hi] (p inside it).
+float exit_distance(glm::vec2 p, glm::vec2 d, glm::vec2 lo, glm::vec2 hi) {
+    float t = 1e9f;
+    for (int k = 0; k < 2; ++k) {
+        if (d[k] > 1e-6f) t = std::min(t, (hi[k] - p[k]) / d[k]);
+        if (d[k] < -1e-6f) t = std::min(t, (lo[k] - p[k]) / d[k]);
+    }
+    return std::max(t, 0.0f);
+}
+
+}  // namespace
+
+float cue_view_min_height(const physics::Table& table, float ball_radius, glm::vec2 cue_ball,
+                          float heading, float distance) {
+    const TableDims dims = table_dims(table);
+    const float L = static_cast<float>(table.length()), W = static_cast<float>(table.width());
+    const float out = dims.cushion_width + dims.rail_width;
+    const glm::vec2 back{-std::cos(heading), -std::sin(heading)};
+    const float clear = dims.rail_height + 0.012f;  // the rail top and a margin
+    // The line of sight to the ball's upper half (1.5 R) crosses the cushion first where it
+    // leaves the cloth: that is where it is lowest over the cushions and rails.
+    const float seen = 1.5f * ball_radius;
+    const float leave = exit_distance(cue_ball, back, {0.0f, 0.0f}, {L, W});
+    float h = 0.0f;
+    if (leave < distance)
+        h = seen + (clear - seen) * distance / std::max(leave, 0.25f * ball_radius);
+    // Over the table's footprint the eye itself stays above the rails.
+    const glm::vec2 eye = cue_ball + distance * back;
+    if (eye.x > -out && eye.x < L + out && eye.y > -out && eye.y < W + out)
+        h = std::max(h, dims.rail_height + 0.06f);
+    return h;
+}
+
+Camera cue_ball_camera(const physics::Table& table, float ball_radius, const CueCameraAim& aim) {
+    const RoomDims room = room_dims(table);
+    const glm::vec2 dir{std::cos(aim.heading), std::sin(aim.heading)};
+    // Come forward from the walls (0.3 m from each).
+    const glm::vec2 margin{0.3f, 0.3f};
+    float distance = std::min(
+        aim.distance, exit_distance(aim.cue_ball, -dir, room.lo + margin, room.hi - margin));
+    distance = std::max(distance, 0.05f);
+    float h = std::max(
+        aim.height, cue_view_min_height(table, ball_radius, aim.cue_ball, aim.heading, distance));
+    // Above the cue's line by a few degrees, so a raised cue is seen from above.
+    const float over_cue = std::clamp(aim.cue_elevation, 0.0f, 1.4f) + glm::radians(6.0f);
+    h = std::max(h, ball_radius + distance * std::tan(std::min(over_cue, 1.45f)) + 0.03f);
+    // Under the ceiling: come forward along the same line of sight.
+    const float top = room.ceiling_z - 0.3f;
+    if (h > top) {
+        distance *= (top - ball_radius) / (h - ball_radius);
+        h = top;
+    }
     Camera c;
-    const glm::vec2 dir{std::cos(heading), std::sin(heading)};
-    c.eye = glm::vec3(cue_ball - distance * dir, height);
-    c.target = glm::vec3(cue_ball + 0.9f * dir, 0.0f);
+    c.eye = glm::vec3(aim.cue_ball - distance * dir, h);
+    // The cue ball 9 degrees below the view's centre (the lower part of a 45 degree view).
+    const float to_ball = std::atan2(h - ball_radius, distance);
+    const float pitch = std::max(to_ball - glm::radians(9.0f), glm::radians(2.0f));
+    const glm::vec3 forward{std::cos(pitch) * dir, -std::sin(pitch)};
+    c.target = c.eye + forward * std::min(h / std::sin(pitch), 6.0f);
     c.up = {0, 0, 1};
     c.fovy_deg = 45.0f;
     c.near_m = 0.02f;
-    c.far_m = 10.0f;
+    c.far_m = 14.0f;
     return c;
 }
 

@@ -25,10 +25,26 @@ struct Camera {
 /// height) allows.
 Camera overhead_camera(const physics::Table& table, float aspect);
 
-/// Behind the cue ball, looking along `heading` (unit: rad, from +x counter-clockwise),
-/// `distance` back and `height` above the cloth (unit: m).
-Camera cue_ball_camera(glm::vec2 cue_ball, float heading, float distance = 0.7f,
-                       float height = 0.28f);
+/// What the cue-ball view is asked for: the player's zoom (distance, height) and the cue.
+struct CueCameraAim {
+    glm::vec2 cue_ball{0.0f};    ///< cue-ball centre (unit: m)
+    float heading = 0.0f;        ///< the stroke's direction, from +x counter-clockwise (unit: rad)
+    float distance = 0.7f;       ///< how far behind the cue ball, horizontally (unit: m)
+    float height = 0.28f;        ///< eye height above the cloth, at least (unit: m)
+    float cue_elevation = 0.0f;  ///< the cue's elevation as drawn (unit: rad)
+};
+
+/// Behind the cue ball, looking along the heading, with the cue ball in the lower part of the
+/// view. The eye never enters the table, a rail or the room: it comes forward from a wall or
+/// the ceiling, and rises until the line from it to the cue ball clears the cushions and rails
+/// (a cue ball near a rail is seen over it) and until it looks down on the cue (a raised cue is
+/// seen from above, never through the eye).
+Camera cue_ball_camera(const physics::Table& table, float ball_radius, const CueCameraAim& aim);
+
+/// The lowest eye height (unit: m) at `distance` behind the cue ball from which the line to the
+/// cue ball's upper half clears the cushions and rails, and which stays above the table.
+float cue_view_min_height(const physics::Table& table, float ball_radius, glm::vec2 cue_ball,
+                          float heading, float distance);
 
 /// A free orbit camera looking at `target` along the heading `yaw_rad` (from +x counter-
 /// clockwise, as cue_ball_camera's heading), down by `pitch_rad` (0 level, π/2 straight

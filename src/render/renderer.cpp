@@ -10,7 +10,11 @@
 #include <stdexcept>
 #include <utility>
 
+#include "render/cue_stick.hpp"
+#include "render/pockets.hpp"
+#include "render/room.hpp"
 #include "render/shaders.hpp"
+#include "render/solid_mesh.hpp"
 #include "render/table_mesh.hpp"
 #include "render/textures.hpp"
 
@@ -31,11 +35,44 @@ constexpr std::array<glm::vec3, 8> kColours = {{
 constexpr glm::vec3 kBlack{0.03f, 0.03f, 0.03f};
 constexpr glm::vec3 kClothColour{0.12f, 0.44f, 0.25f};     // sRGB: a tournament green
 constexpr glm::vec3 kBackground{0.005f, 0.0045f, 0.005f};  // linear
+constexpr glm::vec3 kRefused{0.95f, 0.12f, 0.08f};         // ball in hand where it may not go
+
+/// What every pass of a frame needs.
+struct Pass {
+    glm::mat4 view_proj;
+    glm::vec3 eye;
+    int width, height;
+    float focal;  ///< 1 / tan(fovy / 2)
+};
 
 struct Mesh {
     GLuint vao = 0, vbo = 0;
     GLsizei count = 0;
 };
+
+/// Static solid geometry (the room, the pockets, the lamps' glow) in its own buffer.
+struct SolidMesh {
+    GLuint vao = 0, vbo = 0;
+    GLsizei count = 0;
+};
+
+SolidMesh upload_solid(const std::vector<SolidVertex>& v) {
+    SolidMesh m;
+    glGenVertexArrays(1, &m.vao);
+    glGenBuffers(1, &m.vbo);
+    glBindVertexArray(m.vao);
+    glBindBuffer(GL_ARRAY_BUFFER, m.vbo);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(v.size() * sizeof(SolidVertex)), v.data(),
+                 GL_STATIC_DRAW);
+    for (GLuint i = 0; i < 3; ++i) {
+        glEnableVertexAttribArray(i);
+        glVertexAttribPointer(i, 3, GL_FLOAT, GL_FALSE, sizeof(SolidVertex),
+                              reinterpret_cast<void*>(sizeof(glm::vec3) * i));
+    }
+    m.count = static_cast<GLsizei>(v.size());
+    glBindVertexArray(0);
+    return m;
+}
 
 Mesh upload(const std::vector<Vertex>& v) {
     Mesh m;
@@ -73,76 +110,6 @@ GLuint upload_texture(const TextureData& t, bool srgb = false) {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
     return tex;
-}
-
-/// Vertex of the cue stick and aim guide.
-struct SolidVertex {
-    glm::vec3 pos, normal, colour;
-};
-
-/// A tapered cylinder from a (radius ra) to b (radius rb), colour per end.
-void add_lathe(std::vector<SolidVertex>& out, glm::vec3 a, glm::vec3 b, float ra, float rb,
-               glm::vec3 ca, glm::vec3 cb, int sides) {
-    const glm::vec3 axis = glm::normalize(b - a);
-    const glm::vec3 helper = std::abs(axis.z) < 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0);
-    const glm::vec3 u = glm::normalize(glm::cross(axis, helper)), v = glm::cross(axis, u);
-    for (int i = 0; i < sides; ++i) {
-        const float t0 = 6.2831853f * static_cast<float>(i) / static_cast<float>(sides);
-        const float t1 = 6.2831853f * static_cast<float>(i + 1) / static_cast<float>(sides);
-        const glm::vec3 n0 = std::cos(t0) * u + std::sin(t0) * v,
-                        n1 = std::cos(t1) * u + std::sin(t1) * v;
-        const SolidVertex p0{a + ra * n0, n0, ca}, p1{a + ra * n1, n1, ca}, q0{b + rb * n0, n0, cb},
-            q1{b + rb * n1, n1, cb};
-        out.insert(out.end(), {p0, p1, q1, p0, q1, q0});
-    }
-}
-
-/// A flat ribbon on the cloth along a polyline (the aim guide).
-void add_ribbon(std::vector<SolidVertex>& out, const std::vector<glm::vec2>& line, float half_width,
-                float z, glm::vec3 colour) {
-    for (std::size_t i = 0; i + 1 < line.size(); ++i) {
-        const glm::vec2 d = line[i + 1] - line[i];
-        if (glm::length(d) < 1e-6f) continue;
-        const glm::vec2 s = half_width * glm::normalize(glm::vec2(-d.y, d.x));
-        const glm::vec3 up{0, 0, 1};
-        const SolidVertex a{{line[i] - s, z}, up, colour}, b{{line[i + 1] - s, z}, up, colour},
-            c{{line[i + 1] + s, z}, up, colour}, e{{line[i] + s, z}, up, colour};
-        out.insert(out.end(), {a, b, c, a, c, e});
-    }
-}
-
-/// A box-shaped slab from `lo` to `hi` (axis-aligned), all six faces.
-void add_box(std::vector<SolidVertex>& out, glm::vec3 lo, glm::vec3 hi, glm::vec3 colour) {
-    const glm::vec3 p[8] = {{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z},
-                            {lo.x, hi.y, lo.z}, {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z},
-                            {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}};
-    const int faces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                             {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
-    const glm::vec3 normals[6] = {{0, 0, -1}, {0, 0, 1}, {0, -1, 0},
-                                  {1, 0, 0},  {0, 1, 0}, {-1, 0, 0}};
-    for (int f = 0; f < 6; ++f) {
-        const auto v = [&](int k) { return SolidVertex{p[faces[f][k]], normals[f], colour}; };
-        out.insert(out.end(), {v(0), v(1), v(2), v(0), v(2), v(3)});
-    }
-}
-
-/// A flat quad on the cloth (z) from `lo` to `hi`.
-void add_patch(std::vector<SolidVertex>& out, glm::vec2 lo, glm::vec2 hi, float z,
-               glm::vec3 colour) {
-    const glm::vec3 up{0, 0, 1};
-    const SolidVertex a{{lo.x, lo.y, z}, up, colour}, b{{hi.x, lo.y, z}, up, colour},
-        c{{hi.x, hi.y, z}, up, colour}, d{{lo.x, hi.y, z}, up, colour};
-    out.insert(out.end(), {a, b, c, a, c, d});
-}
-
-void add_ring(std::vector<SolidVertex>& out, glm::vec2 centre, float radius, float half_width,
-              float z, glm::vec3 colour) {
-    std::vector<glm::vec2> circle;
-    for (int i = 0; i <= 48; ++i) {
-        const float t = 6.2831853f * static_cast<float>(i) / 48.0f;
-        circle.push_back(centre + radius * glm::vec2(std::cos(t), std::sin(t)));
-    }
-    add_ribbon(out, circle, half_width, z, colour);
 }
 
 /// The shaders' tone_map (ACES fit, then the display curve), for constants set as uniforms.
@@ -186,10 +153,11 @@ struct Renderer::Impl {
     Mesh cloth, cushions, rails, rail_tops;
     GLuint quad_vao = 0, quad_vbo = 0;
     GLuint solid_vao = 0, solid_vbo = 0;
+    SolidMesh room, fixtures, lamp_glow, pockets;
     // The table's programs, one per material (cloth, cushion, wood), and the cloth's bake.
     std::array<GLuint, 5> table_progs{};  // by TableMaterial; [3] bakes
     GLuint ball_prog = 0, shadow_prog = 0, cushion_shadow_prog = 0, cue_shadow_prog = 0,
-           solid_prog = 0;
+           solid_prog = 0, room_prog = 0;
     GLuint cloth_tex = 0, wood_tex = 0, number_tex = 0;
     // The cloth's view-independent light, baked once over the cloth's footprint.
     GLuint cloth_light_tex = 0;
@@ -200,6 +168,10 @@ struct Renderer::Impl {
     // The static table's cache (colour and depth), valid for `cache_key`.
     GLuint cache_fbo = 0, cache_colour = 0, cache_depth = 0;
     std::vector<float> cache_key;
+    // The moving camera's smaller target, and the last frame's camera and size.
+    GLuint small_fbo = 0, small_colour = 0, small_depth = 0;
+    glm::ivec2 small_size{0};
+    std::vector<float> last_view;
 
     // Construction, in order.
     void build_hole_grid();
@@ -208,8 +180,31 @@ struct Renderer::Impl {
     void build_programs();
     void upload_textures();
     void place_lamps();
+    void draw_room(const glm::mat4& view_proj, const glm::vec3& eye);
+    void draw_static_solid(const SolidMesh& mesh, bool lit, const glm::mat4& view_proj,
+                           const glm::vec3& eye);
 
     void draw_table(const glm::mat4& view_proj, const glm::vec3& eye);
+    /// Whether the camera moved since the last frame (remembers this one).
+    bool camera_moved(const FrameView& frame, int width, int height);
+    /// Binds the moving camera's target of `size` (made on first use).
+    bool bind_small_target(glm::ivec2 size);
+    void free_small_target();
+    void draw_passes(const FrameView& frame, int width, int height, bool moving);
+    // The frame's passes (Renderer::draw).
+    void begin_frame(int width, int height);
+    std::optional<CueAxis> cue_axis_of(const FrameView& frame) const;
+    void draw_shadows(const FrameView& frame, const std::optional<CueAxis>& cue, const Pass& p);
+    void draw_cushion_shadows(const FrameView& frame, const Pass& p);
+    void draw_cue_shadow(const CueAxis& cue, const Pass& p);
+    /// The screen rectangle (x, y, w, h) round a box, none when it is off screen.
+    std::optional<glm::ivec4> screen_box(const Pass& p, glm::vec3 lo, glm::vec3 hi) const;
+    void draw_overlays(const FrameView& frame, const Pass& p);
+    void draw_ball_in_hand_marks(const BallInHandView& h, const Pass& p);
+    std::vector<SolidVertex> tray_mesh() const;
+    void draw_balls(const FrameView& frame, const Pass& p);
+    void draw_ball(const BallView& b);
+    float number_scale(const Pass& p) const;
     /// Flat (lit = false, blended with `alpha`, no depth writes) or lit solid geometry.
     void draw_solid(const std::vector<SolidVertex>& v, bool lit, float alpha,
                     const glm::mat4& view_proj, const glm::vec3& eye);
@@ -255,6 +250,9 @@ void Renderer::Impl::set_table_uniforms(GLuint prog, const glm::mat4& view_proj,
     const physics::Vec2 foot = table.foot_spot();
     glUniform2f(glGetUniformLocation(prog, "u_foot_spot"), static_cast<float>(foot.x),
                 static_cast<float>(foot.y));
+    const physics::Vec2 head = table.head_spot();
+    glUniform2f(glGetUniformLocation(prog, "u_head_spot"), static_cast<float>(head.x),
+                static_cast<float>(head.y));
     glUniform1f(glGetUniformLocation(prog, "u_rail_height"), dims.rail_height);
     const glm::vec3 liner = tone_map(glm::vec3(0.012f, 0.010f, 0.009f), settings.exposure);
     glUniform3fv(glGetUniformLocation(prog, "u_liner_shown"), 1, glm::value_ptr(liner));
@@ -328,6 +326,36 @@ void Renderer::Impl::draw_table(const glm::mat4& view_proj, const glm::vec3& eye
         glBindVertexArray(mesh->vao);
         glDrawArrays(GL_TRIANGLES, 0, mesh->count);
     }
+    // What shows through the holes, then the room behind the table.
+    draw_static_solid(pockets, true, view_proj, eye);
+    draw_room(view_proj, eye);
+}
+
+void Renderer::Impl::draw_room(const glm::mat4& view_proj, const glm::vec3& eye) {
+    const RoomDims r = room_dims(table);
+    const float out = dims.cushion_width + dims.rail_width;
+    const float L = static_cast<float>(table.length()), W = static_cast<float>(table.width());
+    set_common(room_prog, view_proj, eye);
+    glUniform4f(glGetUniformLocation(room_prog, "u_footprint"), -out, -out, L + out, W + out);
+    glUniform4f(glGetUniformLocation(room_prog, "u_room"), r.lo.x, r.lo.y, r.hi.x, r.hi.y);
+    glUniform1f(glGetUniformLocation(room_prog, "u_floor_z"), r.floor_z);
+    glEnable(GL_CULL_FACE);
+    glBindVertexArray(room.vao);
+    glDrawArrays(GL_TRIANGLES, 0, room.count);
+    glDisable(GL_CULL_FACE);
+    if (eye.z < lamps[0].z - 0.05f) {
+        draw_static_solid(fixtures, true, view_proj, eye);
+        draw_static_solid(lamp_glow, false, view_proj, eye);
+    }
+}
+
+void Renderer::Impl::draw_static_solid(const SolidMesh& mesh, bool lit, const glm::mat4& view_proj,
+                                       const glm::vec3& eye) {
+    set_common(solid_prog, view_proj, eye);
+    glUniform1i(glGetUniformLocation(solid_prog, "u_lit"), lit ? 1 : 0);
+    glUniform1f(glGetUniformLocation(solid_prog, "u_alpha"), 1.0f);
+    glBindVertexArray(mesh.vao);
+    glDrawArrays(GL_TRIANGLES, 0, mesh.count);
 }
 
 void Renderer::Impl::draw_solid(const std::vector<SolidVertex>& v, bool lit, float alpha,
@@ -470,6 +498,7 @@ void Renderer::Impl::build_programs() {
     cue_shadow_prog = build_program(glsl::kCueShadowVert, glsl::kCueShadowFrag);
     cushion_shadow_prog = build_program(glsl::kTableVert, glsl::kCushionShadowFrag);
     solid_prog = build_program(glsl::kSolidVert, glsl::kSolidFrag);
+    room_prog = build_program(glsl::kRoomVert, glsl::kRoomFrag);
 }
 
 void Renderer::Impl::upload_textures() {
@@ -487,10 +516,12 @@ void Renderer::Impl::upload_textures() {
 
 // Three shaded lamps along the table's long axis, about 1 m above the cloth.
 void Renderer::Impl::place_lamps() {
-    const float L = static_cast<float>(table.length()), W = static_cast<float>(table.width());
-    for (int i = 0; i < 3; ++i)
-        lamps[static_cast<std::size_t>(i)] = {L * (0.5f + 0.3f * static_cast<float>(i - 1)), W / 2,
-                                              1.0f, 0.16f};
+    const std::vector<Lamp> l = table_lamps(table);
+    for (std::size_t i = 0; i < 3; ++i) lamps[i] = {l[i].pos, l[i].radius};
+    room = upload_solid(room_mesh(table));
+    fixtures = upload_solid(fixtures_mesh(table));
+    lamp_glow = upload_solid(lamp_glow_mesh(table));
+    pockets = upload_solid(pocket_mesh(table));
 }
 
 Renderer::Renderer(const physics::Table& table, double ball_radius, RenderSettings settings)
@@ -520,15 +551,20 @@ Renderer::~Renderer() {
     glDeleteVertexArrays(1, &m.quad_vao);
     glDeleteBuffers(1, &m.solid_vbo);
     glDeleteVertexArrays(1, &m.solid_vao);
+    for (SolidMesh* mesh : {&m.room, &m.fixtures, &m.lamp_glow, &m.pockets}) {
+        glDeleteBuffers(1, &mesh->vbo);
+        glDeleteVertexArrays(1, &mesh->vao);
+    }
     for (GLuint p : m.table_progs) glDeleteProgram(p);
-    for (GLuint p :
-         {m.ball_prog, m.shadow_prog, m.cushion_shadow_prog, m.cue_shadow_prog, m.solid_prog})
+    for (GLuint p : {m.ball_prog, m.shadow_prog, m.cushion_shadow_prog, m.cue_shadow_prog,
+                     m.solid_prog, m.room_prog})
         glDeleteProgram(p);
     glDeleteTextures(1, &m.cloth_light_tex);
     glDeleteTextures(1, &m.cloth_tex);
     glDeleteTextures(1, &m.wood_tex);
     glDeleteTextures(1, &m.number_tex);
     m.free_cache();
+    m.free_small_target();
 }
 
 RenderSettings& Renderer::settings() {
@@ -537,11 +573,97 @@ RenderSettings& Renderer::settings() {
 
 void Renderer::draw(const FrameView& frame, int width, int height) {
     Impl& m = *impl_;
-    const float aspect = static_cast<float>(width) / static_cast<float>(std::max(height, 1));
-    const glm::mat4 view_proj = frame.camera.projection(aspect) * frame.camera.view();
-    const glm::vec3 eye = frame.camera.eye;
-
     if (m.settings.exposure != m.baked_exposure) m.bake_cloth_light();
+    const bool moving = m.camera_moved(frame, width, height);
+    const glm::ivec2 small{static_cast<int>(static_cast<float>(width) * m.settings.moving_scale),
+                           static_cast<int>(static_cast<float>(height) * m.settings.moving_scale)};
+    if (!moving || m.settings.moving_scale >= 1.0f || small.x < 16 || small.y < 16) {
+        m.draw_passes(frame, width, height, moving);
+        return;
+    }
+    // Drawn smaller, then scaled up into the caller's framebuffer.
+    GLint target = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+    if (!m.bind_small_target(small)) {
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target));
+        m.draw_passes(frame, width, height, moving);
+        return;
+    }
+    m.draw_passes(frame, small.x, small.y, moving);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, m.small_fbo);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target));
+    glViewport(0, 0, width, height);
+    glBlitFramebuffer(0, 0, small.x, small.y, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
+}
+
+// The passes of one frame into the bound framebuffer's (0, 0, width, height).
+void Renderer::Impl::draw_passes(const FrameView& frame, int width, int height, bool moving) {
+    const float aspect = static_cast<float>(width) / static_cast<float>(std::max(height, 1));
+    const Pass p{frame.camera.projection(aspect) * frame.camera.view(), frame.camera.eye, width,
+                 height, 1.0f / std::tan(glm::radians(frame.camera.fovy_deg) / 2)};
+    begin_frame(width, height);
+    // 1. The room and the table: from the cache when it can be (its copy overwrites colour and
+    // depth, so no clear), else cleared and drawn. A moving camera would remake it every frame.
+    if (!(settings.cache_table && !moving && use_cache(frame, width, height, p.view_proj))) {
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        draw_table(p.view_proj, p.eye);
+    }
+    const std::optional<CueAxis> cue = cue_axis_of(frame);
+    // 2. Soft shadows and contact occlusion, multiplied onto the cloth and the cushions.
+    if (settings.shadows) draw_shadows(frame, cue, p);
+    // 3. On the cloth: the aim guide, the kitchen and the ball-in-hand ring; the tray.
+    draw_overlays(frame, p);
+    // 4. The balls (the tray's too), then the ball in hand, see-through.
+    draw_balls(frame, p);
+    // 5. The cue stick.
+    if (cue) draw_solid(cue_mesh(*cue), true, 1.0f, p.view_proj, p.eye);
+    glBindVertexArray(0);
+}
+
+bool Renderer::Impl::camera_moved(const FrameView& frame, int width, int height) {
+    const Camera& c = frame.camera;
+    std::vector<float> view = {static_cast<float>(width), static_cast<float>(height), c.fovy_deg,
+                               c.near_m, c.far_m};
+    for (const glm::vec3& v : {c.eye, c.target, c.up}) view.insert(view.end(), {v.x, v.y, v.z});
+    const bool moved = !last_view.empty() && view != last_view;
+    last_view = view;
+    return moved;
+}
+
+bool Renderer::Impl::bind_small_target(glm::ivec2 size) {
+    if (small_fbo && size == small_size) {
+        glBindFramebuffer(GL_FRAMEBUFFER, small_fbo);
+        return true;
+    }
+    free_small_target();
+    glGenFramebuffers(1, &small_fbo);
+    glGenRenderbuffers(1, &small_colour);
+    glGenRenderbuffers(1, &small_depth);
+    glBindRenderbuffer(GL_RENDERBUFFER, small_colour);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, size.x, size.y);
+    glBindRenderbuffer(GL_RENDERBUFFER, small_depth);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, size.x, size.y);
+    glBindFramebuffer(GL_FRAMEBUFFER, small_fbo);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, small_colour);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, small_depth);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+        free_small_target();
+        return false;
+    }
+    small_size = size;
+    return true;
+}
+
+void Renderer::Impl::free_small_target() {
+    if (small_fbo) glDeleteFramebuffers(1, &small_fbo);
+    if (small_colour) glDeleteRenderbuffers(1, &small_colour);
+    if (small_depth) glDeleteRenderbuffers(1, &small_depth);
+    small_fbo = small_colour = small_depth = 0;
+    small_size = {0, 0};
+}
+
+void Renderer::Impl::begin_frame(int width, int height) {
     glViewport(0, 0, width, height);
     const glm::vec3 bg = glm::pow(kBackground, glm::vec3(1.0f / 2.2f));
     glClearColor(bg.x, bg.y, bg.z, 1.0f);
@@ -551,117 +673,112 @@ void Renderer::draw(const FrameView& frame, int width, int height) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
     glDisable(GL_CULL_FACE);
+    glCullFace(GL_BACK);  // used for the room only
+    glFrontFace(GL_CCW);
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
+}
 
-    // 1. The table: from the cache when it can be (its copy overwrites colour and depth, so
-    // no clear), else cleared and drawn.
-    if (!(m.settings.cache_table && m.use_cache(frame, width, height, view_proj))) {
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        m.draw_table(view_proj, eye);
+std::optional<CueAxis> Renderer::Impl::cue_axis_of(const FrameView& frame) const {
+    if (!frame.cue) return std::nullopt;
+    const CueView& c = *frame.cue;
+    // The butt rises over the rail when the rail forces it, as a real cue would.
+    const float elevation =
+        drawn_cue_elevation(table, radius, c.cue_ball, c.heading, c.elevation, c.tip_offset);
+    return cue_axis(c.cue_ball, radius, c.heading, elevation, c.tip_offset, c.pull_back);
+}
+
+void Renderer::Impl::draw_shadows(const FrameView& frame, const std::optional<CueAxis>& cue,
+                                  const Pass& p) {
+    set_common(shadow_prog, p.view_proj, p.eye);
+    glUniform1f(glGetUniformLocation(shadow_prog, "u_radius"), radius);
+    const GLint centre = glGetUniformLocation(shadow_prog, "u_centre");
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ZERO, GL_SRC_COLOR);
+    glDepthMask(GL_FALSE);
+    glBindVertexArray(quad_vao);
+    for (const BallView& b : frame.balls) {
+        if (b.centre.z < 0.0f) continue;  // dropping into a pocket: no shadow on the cloth
+        glUniform3fv(centre, 1, glm::value_ptr(b.centre));
+        glDrawArrays(GL_TRIANGLES, 0, 6);
     }
+    draw_cushion_shadows(frame, p);
+    if (cue) draw_cue_shadow(*cue, p);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+}
 
-    // The cue stick's axis: tip and butt centres, radii.
-    struct CueAxis {
-        glm::vec3 dir, tip;
+// On the cushions: only the balls close enough to one to shade it, one pass per ball,
+// scissored to the screen box of the cushion round it, so only those few pixels run the shader.
+void Renderer::Impl::draw_cushion_shadows(const FrameView& frame, const Pass& p) {
+    std::array<glm::vec3, 16> near{};
+    int near_count = 0;
+    const float near_cushion = 4.0f * radius, Lt = static_cast<float>(table.length()),
+                Wt = static_cast<float>(table.width());
+    for (const BallView& b : frame.balls) {
+        const bool close = b.centre.x < near_cushion || b.centre.x > Lt - near_cushion ||
+                           b.centre.y < near_cushion || b.centre.y > Wt - near_cushion;
+        if (close && b.centre.z > 0.0f && near_count < 16)
+            near[static_cast<std::size_t>(near_count++)] = b.centre;
+    }
+    if (near_count == 0) return;
+    set_common(cushion_shadow_prog, p.view_proj, p.eye);
+    glUniform1i(glGetUniformLocation(cushion_shadow_prog, "u_ball_count"), 1);
+    glUniform1f(glGetUniformLocation(cushion_shadow_prog, "u_radius"), radius);
+    const GLint u_balls = glGetUniformLocation(cushion_shadow_prog, "u_balls");
+    glBindVertexArray(cushions.vao);
+    glEnable(GL_SCISSOR_TEST);
+    for (int k = 0; k < near_count; ++k) {
+        const glm::vec3 c = near[static_cast<std::size_t>(k)];
+        const glm::vec3 lo{c.x - 4.0f * radius, c.y - 4.0f * radius, 0.0f};
+        const glm::vec3 hi{c.x + 4.0f * radius, c.y + 4.0f * radius, dims.rail_height};
+        const std::optional<glm::ivec4> box = screen_box(p, lo, hi);
+        if (!box) continue;
+        glScissor(box->x, box->y, box->z, box->w);
+        glUniform3fv(u_balls, 1, glm::value_ptr(c));
+        glDrawArrays(GL_TRIANGLES, 0, cushions.count);
+    }
+    glDisable(GL_SCISSOR_TEST);
+    glBindVertexArray(quad_vao);
+}
+
+std::optional<glm::ivec4> Renderer::Impl::screen_box(const Pass& p, glm::vec3 lo,
+                                                     glm::vec3 hi) const {
+    glm::vec2 a{1e9f}, b{-1e9f};
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 q{corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y,
+                          corner & 4 ? hi.z : lo.z};
+        const glm::vec4 clip = p.view_proj * glm::vec4(q, 1.0f);
+        if (clip.w <= 1e-4f) return glm::ivec4(0, 0, p.width, p.height);  // behind the eye
+        a = glm::min(a, glm::vec2(clip) / clip.w);
+        b = glm::max(b, glm::vec2(clip) / clip.w);
+    }
+    if (b.x < -1.0f || b.y < -1.0f || a.x > 1.0f || a.y > 1.0f) return std::nullopt;
+    const auto px = [](float v, int size) {
+        return std::clamp(
+            static_cast<int>(std::floor((0.5f * v + 0.5f) * static_cast<float>(size))), 0, size);
     };
-    std::optional<CueAxis> cue_axis;
-    const float cue_length = 1.47f;
-    if (frame.cue) {
-        const CueView& c = *frame.cue;
-        const glm::vec3 dir{std::cos(c.heading) * std::cos(c.elevation),
-                            std::sin(c.heading) * std::cos(c.elevation), -std::sin(c.elevation)};
-        cue_axis = CueAxis{dir, glm::vec3(c.cue_ball, m.radius) - (m.radius + c.pull_back) * dir};
-    }
+    const int x0 = px(a.x, p.width), y0 = px(a.y, p.height);
+    const int x1 = std::min(px(b.x, p.width) + 1, p.width),
+              y1 = std::min(px(b.y, p.height) + 1, p.height);
+    return glm::ivec4(x0, y0, x1 - x0, y1 - y0);
+}
 
-    // 2. Soft shadows and contact occlusion, multiplied onto the cloth.
-    if (m.settings.shadows) {
-        m.set_common(m.shadow_prog, view_proj, eye);
-        glUniform1f(glGetUniformLocation(m.shadow_prog, "u_radius"), m.radius);
-        const GLint centre = glGetUniformLocation(m.shadow_prog, "u_centre");
-        glEnable(GL_BLEND);
-        glBlendFunc(GL_ZERO, GL_SRC_COLOR);
-        glDepthMask(GL_FALSE);
-        glBindVertexArray(m.quad_vao);
-        for (const BallView& b : frame.balls) {
-            glUniform3fv(centre, 1, glm::value_ptr(b.centre));
-            glDrawArrays(GL_TRIANGLES, 0, 6);
-        }
-        // On the cushions: only the balls close enough to one to shade it.
-        std::array<glm::vec3, 16> near{};
-        int near_count = 0;
-        const float near_cushion = 4.0f * m.radius, Lt = static_cast<float>(m.table.length()),
-                    Wt = static_cast<float>(m.table.width());
-        for (const BallView& b : frame.balls) {
-            const bool close = b.centre.x < near_cushion || b.centre.x > Lt - near_cushion ||
-                               b.centre.y < near_cushion || b.centre.y > Wt - near_cushion;
-            if (close && near_count < 16) near[static_cast<std::size_t>(near_count++)] = b.centre;
-        }
-        if (near_count > 0) {
-            // One pass per ball, scissored to the screen box of the cushion round it, so only
-            // those few pixels run the shader.
-            m.set_common(m.cushion_shadow_prog, view_proj, eye);
-            glUniform1i(glGetUniformLocation(m.cushion_shadow_prog, "u_ball_count"), 1);
-            glUniform1f(glGetUniformLocation(m.cushion_shadow_prog, "u_radius"), m.radius);
-            const GLint u_balls = glGetUniformLocation(m.cushion_shadow_prog, "u_balls");
-            glBindVertexArray(m.cushions.vao);
-            glEnable(GL_SCISSOR_TEST);
-            for (int k = 0; k < near_count; ++k) {
-                const glm::vec3 c = near[static_cast<std::size_t>(k)];
-                glm::vec2 lo{1e9f}, hi{-1e9f};
-                bool behind = false;
-                for (int corner = 0; corner < 8; ++corner) {
-                    const glm::vec3 p{c.x + (corner & 1 ? 4.0f : -4.0f) * m.radius,
-                                      c.y + (corner & 2 ? 4.0f : -4.0f) * m.radius,
-                                      corner & 4 ? m.dims.rail_height : 0.0f};
-                    const glm::vec4 clip = view_proj * glm::vec4(p, 1.0f);
-                    if (clip.w <= 1e-4f) {
-                        behind = true;
-                        break;
-                    }
-                    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
-                    lo = glm::min(lo, ndc);
-                    hi = glm::max(hi, ndc);
-                }
-                if (behind) {
-                    glScissor(0, 0, width, height);
-                } else {
-                    if (hi.x < -1.0f || hi.y < -1.0f || lo.x > 1.0f || lo.y > 1.0f) continue;
-                    const auto px = [](float v, int size) {
-                        return std::clamp(static_cast<int>(std::floor((0.5f * v + 0.5f) *
-                                                                      static_cast<float>(size))),
-                                          0, size);
-                    };
-                    const int x0 = px(lo.x, width), y0 = px(lo.y, height), x1 = px(hi.x, width) + 1,
-                              y1 = px(hi.y, height) + 1;
-                    glScissor(x0, y0, std::min(x1, width) - x0, std::min(y1, height) - y0);
-                }
-                glUniform3fv(u_balls, 1, glm::value_ptr(c));
-                glDrawArrays(GL_TRIANGLES, 0, m.cushions.count);
-            }
-            glDisable(GL_SCISSOR_TEST);
-            glBindVertexArray(m.quad_vao);
-        }
-        if (cue_axis) {
-            // The cue's shadow: over the cue's footprint, widened by how far the lamps throw
-            // the shadow of its highest point.
-            const glm::vec3 a = cue_axis->tip, b = cue_axis->tip - cue_length * cue_axis->dir;
-            const float reach = 0.05f + 1.6f * std::max(a.z, b.z);
-            const glm::vec4 rect{std::min(a.x, b.x) - reach, std::min(a.y, b.y) - reach,
-                                 std::max(a.x, b.x) + reach, std::max(a.y, b.y) + reach};
-            m.set_common(m.cue_shadow_prog, view_proj, eye);
-            glUniform4fv(glGetUniformLocation(m.cue_shadow_prog, "u_rect"), 1,
-                         glm::value_ptr(rect));
-            glUniform3fv(glGetUniformLocation(m.cue_shadow_prog, "u_cue_a"), 1, glm::value_ptr(a));
-            glUniform3fv(glGetUniformLocation(m.cue_shadow_prog, "u_cue_b"), 1, glm::value_ptr(b));
-            glUniform2f(glGetUniformLocation(m.cue_shadow_prog, "u_cue_r"), 0.0063f, 0.0145f);
-            glDrawArrays(GL_TRIANGLES, 0, 6);
-        }
-        glDepthMask(GL_TRUE);
-        glDisable(GL_BLEND);
-    }
+// The cue's shadow, within cue_shadow_rect (never beyond the table).
+void Renderer::Impl::draw_cue_shadow(const CueAxis& cue, const Pass& p) {
+    const glm::vec3 a = cue.tip, b = cue.tip - kCueLength * cue.dir;
+    const glm::vec4 rect = cue_shadow_rect(table, cue);
+    if (rect.x >= rect.z || rect.y >= rect.w) return;
+    set_common(cue_shadow_prog, p.view_proj, p.eye);
+    glUniform4fv(glGetUniformLocation(cue_shadow_prog, "u_rect"), 1, glm::value_ptr(rect));
+    glUniform3fv(glGetUniformLocation(cue_shadow_prog, "u_cue_a"), 1, glm::value_ptr(a));
+    glUniform3fv(glGetUniformLocation(cue_shadow_prog, "u_cue_b"), 1, glm::value_ptr(b));
+    glUniform2f(glGetUniformLocation(cue_shadow_prog, "u_cue_r"), cue_radius(0.0f),
+                cue_radius(kCueLength));
+    glDrawArrays(GL_TRIANGLES, 0, 6);
+}
 
-    // 3. The aim guide on the cloth.
+void Renderer::Impl::draw_overlays(const FrameView& frame, const Pass& p) {
     std::vector<SolidVertex> guide;
     if (frame.aim) {
         const AimView& aim = *frame.aim;
@@ -671,117 +788,104 @@ void Renderer::draw(const FrameView& frame, int width, int height) {
         add_ribbon(guide, aim.object_path, 0.0012f, 0.0006f, colour({1.0f, 0.85f, 0.3f}));
         add_ribbon(guide, aim.cue_after, 0.0009f, 0.0006f, colour({0.6f, 0.8f, 1.0f}));
         if (aim.ghost)
-            add_ring(guide, *aim.ghost, m.radius, 0.0012f, 0.0007f, colour({0.95f, 0.95f, 0.95f}));
+            add_ring(guide, *aim.ghost, radius, 0.0012f, 0.0007f, colour({0.95f, 0.95f, 0.95f}));
         for (const AimMark& k : aim.marks)
             add_ring(guide, k.centre, k.radius, k.half_width, 0.0007f, k.colour);
     }
-    m.draw_solid(guide, false, 0.7f, view_proj, eye);
+    draw_solid(guide, false, 0.7f, p.view_proj, p.eye);
+    if (frame.ball_in_hand) draw_ball_in_hand_marks(*frame.ball_in_hand, p);
+    if (!frame.tray.empty()) draw_solid(tray_mesh(), true, 1.0f, p.view_proj, p.eye);
+}
 
-    // 3b. Ball in hand: the kitchen shaded when placement is restricted to it, a ring on the
-    // cloth round the cue ball's place.
-    const float L = static_cast<float>(m.table.length()), W = static_cast<float>(m.table.width());
-    const glm::vec3 red{0.95f, 0.12f, 0.08f};
-    if (frame.ball_in_hand) {
-        const BallInHandView& h = *frame.ball_in_hand;
-        if (h.kitchen_only) {
-            std::vector<SolidVertex> kitchen;
-            add_patch(kitchen, {0.0f, 0.0f}, {L / 4, W}, 0.0005f, {0.85f, 0.92f, 1.0f});
-            m.draw_solid(kitchen, false, 0.07f, view_proj, eye);
-            std::vector<SolidVertex> head_string;
-            add_ribbon(head_string, {{L / 4, 0.0f}, {L / 4, W}}, 0.0015f, 0.0006f,
-                       {0.9f, 0.95f, 1.0f});
-            m.draw_solid(head_string, false, 0.5f, view_proj, eye);
-        }
-        std::vector<SolidVertex> ring;
-        add_ring(ring, h.pos, m.radius * 1.3f, 0.003f, 0.0007f, h.legal ? glm::vec3(0.95f) : red);
-        m.draw_solid(ring, false, 0.85f, view_proj, eye);
+// The kitchen shaded when placement is restricted to it, a ring on the cloth round the cue
+// ball's place (red where it may not go).
+void Renderer::Impl::draw_ball_in_hand_marks(const BallInHandView& h, const Pass& p) {
+    const float L = static_cast<float>(table.length()), W = static_cast<float>(table.width());
+    if (h.kitchen_only) {
+        std::vector<SolidVertex> kitchen;
+        add_patch(kitchen, {0.0f, 0.0f}, {L / 4, W}, 0.0005f, {0.85f, 0.92f, 1.0f});
+        draw_solid(kitchen, false, 0.07f, p.view_proj, p.eye);
+        std::vector<SolidVertex> head_string;
+        add_ribbon(head_string, {{L / 4, 0.0f}, {L / 4, W}}, 0.0015f, 0.0006f, {0.9f, 0.95f, 1.0f});
+        draw_solid(head_string, false, 0.5f, p.view_proj, p.eye);
     }
+    std::vector<SolidVertex> ring;
+    add_ring(ring, h.pos, radius * 1.3f, 0.003f, 0.0007f, h.legal ? glm::vec3(0.95f) : kRefused);
+    draw_solid(ring, false, 0.85f, p.view_proj, p.eye);
+}
 
-    // 3c. The ball-return tray along the south side: a dark wooden trough against the apron.
-    if (!frame.tray.empty()) {
-        std::vector<SolidVertex> tray;
-        const float out = m.dims.cushion_width + m.dims.rail_width;
-        const float len = tray_length(m.radius), x0 = L / 2 - len / 2, x1 = L / 2 + len / 2;
-        const float wall = m.dims.tray_wall, floor_z = m.dims.tray_floor,
-                    top = floor_z + 1.3f * m.radius;
-        const float y_in = -out, y_out = -out - m.dims.tray_width - 2 * wall;
-        const glm::vec3 wood{0.22f, 0.08f, 0.04f}, lining{0.05f, 0.05f, 0.05f};
-        add_box(tray, {x0, y_out, floor_z - wall}, {x1, y_in, floor_z}, lining);    // floor
-        add_box(tray, {x0, y_out, floor_z - wall}, {x1, y_out + wall, top}, wood);  // outer wall
-        add_box(tray, {x0, y_in - wall, floor_z - wall}, {x1, y_in, top - 0.5f * m.radius},
-                wood);                                                             // inner wall
-        add_box(tray, {x0 - wall, y_out, floor_z - wall}, {x0, y_in, top}, wood);  // ends
-        add_box(tray, {x1, y_out, floor_z - wall}, {x1 + wall, y_in, top}, wood);
-        m.draw_solid(tray, true, 1.0f, view_proj, eye);
-    }
+// The ball-return tray along the south side: a dark wooden trough against the apron.
+std::vector<SolidVertex> Renderer::Impl::tray_mesh() const {
+    std::vector<SolidVertex> tray;
+    const float L = static_cast<float>(table.length());
+    const float out = dims.cushion_width + dims.rail_width;
+    const float len = tray_length(radius), x0 = L / 2 - len / 2, x1 = L / 2 + len / 2;
+    const float wall = dims.tray_wall, floor_z = dims.tray_floor, top = floor_z + 1.3f * radius;
+    const float y_in = -out, y_out = -out - dims.tray_width - 2 * wall;
+    const glm::vec3 wood{0.22f, 0.08f, 0.04f}, lining{0.05f, 0.05f, 0.05f};
+    add_box(tray, {x0, y_out, floor_z - wall}, {x1, y_in, floor_z}, lining);    // floor
+    add_box(tray, {x0, y_out, floor_z - wall}, {x1, y_out + wall, top}, wood);  // outer wall
+    add_box(tray, {x0, y_in - wall, floor_z - wall}, {x1, y_in, top - 0.5f * radius}, wood);
+    add_box(tray, {x0 - wall, y_out, floor_z - wall}, {x0, y_in, top}, wood);  // ends
+    add_box(tray, {x1, y_out, floor_z - wall}, {x1 + wall, y_in, top}, wood);
+    return tray;
+}
 
-    // 4. The balls: one ray-cast impostor each.
-    m.set_common(m.ball_prog, view_proj, eye);
-    glUniform1f(glGetUniformLocation(m.ball_prog, "u_radius"), m.radius);
-    const GLint u_centre = glGetUniformLocation(m.ball_prog, "u_centre");
-    const GLint u_rotation = glGetUniformLocation(m.ball_prog, "u_rotation");
-    const GLint u_colour = glGetUniformLocation(m.ball_prog, "u_colour");
-    const GLint u_stripe = glGetUniformLocation(m.ball_prog, "u_stripe");
-    const GLint u_cue = glGetUniformLocation(m.ball_prog, "u_cue");
-    const GLint u_number = glGetUniformLocation(m.ball_prog, "u_number");
+void Renderer::Impl::draw_balls(const FrameView& frame, const Pass& p) {
+    set_common(ball_prog, p.view_proj, p.eye);
+    glUniform1f(glGetUniformLocation(ball_prog, "u_radius"), radius);
     glActiveTexture(GL_TEXTURE2);
-    glBindTexture(GL_TEXTURE_2D, m.number_tex);
+    glBindTexture(GL_TEXTURE_2D, number_tex);
     glActiveTexture(GL_TEXTURE0);
-    glUniform1i(glGetUniformLocation(m.ball_prog, "u_numbers"), 2);
-    const GLint u_tint = glGetUniformLocation(m.ball_prog, "u_tint");
-    const GLint u_alpha = glGetUniformLocation(m.ball_prog, "u_alpha");
+    glUniform1i(glGetUniformLocation(ball_prog, "u_numbers"), 2);
+    glUniform1f(glGetUniformLocation(ball_prog, "u_number_scale"), number_scale(p));
+    const GLint u_tint = glGetUniformLocation(ball_prog, "u_tint");
+    const GLint u_alpha = glGetUniformLocation(ball_prog, "u_alpha");
     glUniform4f(u_tint, 0.0f, 0.0f, 0.0f, 0.0f);
     glUniform1f(u_alpha, 1.0f);
-    // The tray's balls after the table's, numbers up and upright as seen from the overhead camera.
-    std::vector<BallView> balls(frame.balls.begin(), frame.balls.end());
+    glBindVertexArray(quad_vao);
+    for (const BallView& b : frame.balls) draw_ball(b);
+    // The tray's balls, numbers up and upright as seen from the overhead camera.
     const glm::quat numbers_up = glm::angleAxis(-1.5707963f, glm::vec3(0, 0, 1)) *
                                  glm::angleAxis(-1.5707963f, glm::vec3(0, 1, 0));
     for (std::size_t k = 0; k < frame.tray.size() && k < 15; ++k)
-        balls.push_back(
-            {frame.tray[k], tray_slot(m.table, m.radius, static_cast<int>(k)), numbers_up});
-    if (frame.ball_in_hand)
-        balls.push_back({0, {frame.ball_in_hand->pos, m.radius}, glm::quat(1, 0, 0, 0)});
-    glBindVertexArray(m.quad_vao);
-    for (std::size_t i = 0; i < balls.size(); ++i) {
-        const BallView& b = balls[i];
-        if (frame.ball_in_hand && i + 1 == balls.size()) {
-            // The ball in hand: see-through, red when it may not go there.
-            glEnable(GL_BLEND);
-            glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-            glDepthMask(GL_FALSE);
-            glUniform1f(u_alpha, 0.6f);
-            if (!frame.ball_in_hand->legal) glUniform4f(u_tint, red.x, red.y, red.z, 0.55f);
-        }
-        const glm::mat3 rot = glm::mat3_cast(b.orientation);
-        const glm::vec3 colour = ball_colour(b.id);
-        glUniform3fv(u_centre, 1, glm::value_ptr(b.centre));
-        glUniformMatrix3fv(u_rotation, 1, GL_FALSE, glm::value_ptr(rot));
-        glUniform3fv(u_colour, 1, glm::value_ptr(colour));
-        glUniform1i(u_stripe, is_stripe(b.id) ? 1 : 0);
-        glUniform1i(u_cue, b.id == 0 ? 1 : 0);
-        glUniform1i(u_number, b.id >= 1 && b.id <= 15 ? b.id : 0);
-        glDrawArrays(GL_TRIANGLES, 0, 6);
+        draw_ball({frame.tray[k], tray_slot(table, radius, static_cast<int>(k)), numbers_up});
+    if (frame.ball_in_hand) {
+        // The ball in hand: see-through, red when it may not go there.
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glDepthMask(GL_FALSE);
+        glUniform1f(u_alpha, 0.6f);
+        if (!frame.ball_in_hand->legal)
+            glUniform4f(u_tint, kRefused.x, kRefused.y, kRefused.z, 0.55f);
+        draw_ball({0, {frame.ball_in_hand->pos, radius}, glm::quat(1, 0, 0, 0)});
+        glDepthMask(GL_TRUE);
+        glDisable(GL_BLEND);
     }
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
+}
 
-    // 5. The cue stick: tip, ferrule, maple shaft, dark butt.
-    if (frame.cue) {
-        const glm::vec3 dir = cue_axis->dir, tip = cue_axis->tip;
-        std::vector<SolidVertex> cue;
-        const float len = cue_length;
-        auto at = [&](float s) { return tip - s * dir; };
-        add_lathe(cue, at(0.0f), at(0.010f), 0.0062f, 0.0064f, {0.18f, 0.30f, 0.62f},
-                  {0.18f, 0.30f, 0.62f}, 20);
-        add_lathe(cue, at(0.010f), at(0.035f), 0.0064f, 0.0065f, {0.92f, 0.90f, 0.84f},
-                  {0.92f, 0.90f, 0.84f}, 20);
-        add_lathe(cue, at(0.035f), at(0.75f), 0.0065f, 0.0105f, {0.86f, 0.74f, 0.52f},
-                  {0.80f, 0.66f, 0.44f}, 20);
-        add_lathe(cue, at(0.75f), at(len), 0.0105f, 0.0145f, {0.20f, 0.07f, 0.04f},
-                  {0.08f, 0.03f, 0.02f}, 20);
-        m.draw_solid(cue, true, 1.0f, view_proj, eye);
-    }
-    glBindVertexArray(0);
+void Renderer::Impl::draw_ball(const BallView& b) {
+    const glm::mat3 rot = glm::mat3_cast(b.orientation);
+    const glm::vec3 colour = ball_colour(b.id);
+    glUniform3fv(glGetUniformLocation(ball_prog, "u_centre"), 1, glm::value_ptr(b.centre));
+    glUniformMatrix3fv(glGetUniformLocation(ball_prog, "u_rotation"), 1, GL_FALSE,
+                       glm::value_ptr(rot));
+    glUniform3fv(glGetUniformLocation(ball_prog, "u_colour"), 1, glm::value_ptr(colour));
+    glUniform1i(glGetUniformLocation(ball_prog, "u_stripe"), is_stripe(b.id) ? 1 : 0);
+    glUniform1i(glGetUniformLocation(ball_prog, "u_cue"), b.id == 0 ? 1 : 0);
+    glUniform1i(glGetUniformLocation(ball_prog, "u_number"), b.id >= 1 && b.id <= 15 ? b.id : 0);
+    glDrawArrays(GL_TRIANGLES, 0, 6);
+}
+
+// How much larger the numbers are drawn than on a real ball: 1 where a ball is large on screen,
+// up to 1.6 where it is small (the overhead view of the whole table), so they stay readable.
+float Renderer::Impl::number_scale(const Pass& p) const {
+    const glm::vec3 centre{static_cast<float>(table.length()) / 2,
+                           static_cast<float>(table.width()) / 2, radius};
+    const glm::vec4 a = p.view_proj * glm::vec4(centre, 1.0f);
+    const float pixels =
+        radius / std::max(a.w, 1e-3f) * p.focal * 0.5f * static_cast<float>(p.height);
+    return std::clamp(1.0f + (24.0f - pixels) / 20.0f, 1.0f, 1.6f);
 }
 
 OffscreenTarget::OffscreenTarget(int width, int height, int samples)

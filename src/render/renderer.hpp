@@ -30,8 +30,13 @@ struct BallView {
 struct CueView {
     glm::vec2 cue_ball{0.0f};  ///< cue-ball centre (unit: m)
     float heading = 0.0f;      ///< direction of the stroke, from +x counter-clockwise (unit: rad)
-    float elevation = 0.0f;    ///< butt raised by this angle (unit: rad)
-    float pull_back = 0.05f;   ///< gap between the tip and the ball (unit: m)
+    /// Butt raised by this angle (unit: rad); drawn at least at the elevation the rail forces
+    /// (render::drawn_cue_elevation), which the stroke must use too.
+    float elevation = 0.0f;
+    float pull_back = 0.05f;  ///< gap between the tip and the ball (unit: m)
+    /// Where the tip meets the ball: side (right of centre as the shooter sees it) and top
+    /// (above centre), unit: R, as on the panel's tip picture (physics::Stroke side, top).
+    glm::vec2 tip_offset{0.0f};
 };
 
 /// The aim guide: polylines on the cloth and a ghost ball, all from the physics engine.
@@ -82,6 +87,11 @@ struct RenderSettings {
     /// overhead camera is fixed). Used only when the bound framebuffer is an FBO with a
     /// 24-bit depth attachment (OffscreenTarget); otherwise the table is drawn every frame.
     bool cache_table = true;
+    /// While the camera moves (it differs from the previous frame's: aiming in the cue-ball
+    /// view, a transition), the frame is drawn at this fraction of the size, without the table
+    /// cache, and scaled up (bilinear) into the bound framebuffer's colour; a still camera is
+    /// drawn at full size. 1: always full size.
+    float moving_scale = 0.75f;
     /// TrueType font the ball numbers are rasterized from at start-up; the Renderer's
     /// constructor throws std::runtime_error when it is missing.
     std::string number_font = kDefaultNumberFont;

@@ -7,7 +7,9 @@
 #include "physics/rack.hpp"
 #include "physics/scenes.hpp"
 #include "physics/simulate.hpp"
+#include "render/cue_stick.hpp"
 #include "render/orientation.hpp"
+#include "render/pockets.hpp"
 
 namespace render {
 
@@ -105,7 +107,72 @@ DemoScene cue_view_scene(float aspect) {
     DemoScene s = racked_scene(aspect);
     const float heading = aim_at_apex(s, 0.08f, 0.06f);
     const BallView& cue = s.balls.front();
-    s.camera = cue_ball_camera({cue.centre.x, cue.centre.y}, heading);
+    s.camera =
+        cue_ball_camera(s.table, static_cast<float>(s.ball_radius),
+                        {{cue.centre.x, cue.centre.y}, heading, 0.75f, 0.2775f, s.cue->elevation});
+    return s;
+}
+
+DemoScene rail_view_scene(float aspect) {
+    DemoScene s = racked_scene(aspect);
+    // The cue ball 4 mm off the head rail, the aim up the table at the apex ball: the view
+    // rises to see it over the rail, and the rail forces the cue's butt up.
+    BallView& cue = s.balls.front();
+    cue.centre.x = static_cast<float>(s.ball_radius) + 0.004f;
+    cue.centre.y = 0.55f * static_cast<float>(s.table.width());
+    const float heading = aim_at_apex(s, 0.0f, 0.04f);
+    s.cue->tip_offset = {0.0f, 0.3f};
+    const float R = static_cast<float>(s.ball_radius);
+    const glm::vec2 c{cue.centre.x, cue.centre.y};
+    s.camera = cue_ball_camera(
+        s.table, R,
+        {c, heading, 0.75f, 0.2775f,
+         drawn_cue_elevation(s.table, R, c, heading, s.cue->elevation, s.cue->tip_offset)});
+    return s;
+}
+
+DemoScene raised_cue_scene(float aspect) {
+    DemoScene s = racked_scene(aspect);
+    // A masse-like stroke: the cue raised 25 degrees, the tip low and right.
+    const float heading = aim_at_apex(s, 0.4363323f, 0.05f);
+    s.cue->tip_offset = {0.35f, -0.3f};
+    const BallView& cue = s.balls.front();
+    s.camera =
+        cue_ball_camera(s.table, static_cast<float>(s.ball_radius),
+                        {{cue.centre.x, cue.centre.y}, heading, 0.75f, 0.2775f, s.cue->elevation});
+    return s;
+}
+
+DemoScene pocket_scene(float aspect) {
+    DemoScene s = racked_scene(aspect);
+    // The foot-right corner pocket close up, the 9 half-way into it and the 3 in the jaws.
+    const float L = static_cast<float>(s.table.length()), W = static_cast<float>(s.table.width());
+    const float R = static_cast<float>(s.ball_radius);
+    s.balls.resize(1);
+    s.balls.push_back({9, dropping_ball_centre(s.table, R, {L - 0.02f, W - 0.02f}, 0.12f),
+                       initial_orientation(9)});
+    s.balls.push_back({3, {L - 0.09f, W - 0.045f, R}, initial_orientation(3)});
+    s.camera.target = {L - 0.03f, W - 0.03f, -0.01f};
+    s.camera.eye = {L - 0.42f, W - 0.36f, 0.32f};
+    s.camera.up = {0, 0, 1};
+    s.camera.fovy_deg = 35.0f;
+    s.camera.near_m = 0.02f;
+    s.camera.far_m = 14.0f;
+    (void)aspect;
+    return s;
+}
+
+DemoScene room_scene(float aspect) {
+    DemoScene s = racked_scene(aspect);
+    // From a corner of the room, standing: the table, its legs, the lamps and the walls.
+    const float L = static_cast<float>(s.table.length()), W = static_cast<float>(s.table.width());
+    s.camera.target = {0.5f * L, 0.5f * W, -0.15f};
+    s.camera.eye = {-1.3f, -1.25f, 0.9f};
+    s.camera.up = {0, 0, 1};
+    s.camera.fovy_deg = 50.0f;
+    s.camera.near_m = 0.05f;
+    s.camera.far_m = 14.0f;
+    (void)aspect;
     return s;
 }
 

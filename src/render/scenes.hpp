@@ -36,6 +36,15 @@ DemoScene mid_game_scene(float aspect, double t = 0.35);
 DemoScene mid_roll_scene(float aspect, double t = 0.6);
 /// The racked table seen from behind the cue ball, with the cue stick and the aim guide.
 DemoScene cue_view_scene(float aspect);
+/// The cue ball 4 mm off the head rail, aimed at the apex ball, seen from the cue-ball view:
+/// the view rises over the rail, the rail forces the cue's butt up; tip above centre.
+DemoScene rail_view_scene(float aspect);
+/// The cue raised 25 degrees, tip low and right of centre, in the cue-ball view (raised too).
+DemoScene raised_cue_scene(float aspect);
+/// A corner pocket close up: one ball dropping into it, one in the jaws.
+DemoScene pocket_scene(float aspect);
+/// The room from a corner, standing: the table, its legs and body, the lamps, the walls.
+DemoScene room_scene(float aspect);
 /// The same aim as cue_view_scene (cue stick and aim guide) seen from the overhead camera,
 /// so the cue's shadow on the cloth shows.
 DemoScene aim_overhead_scene(float aspect);

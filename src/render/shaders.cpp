@@ -184,6 +184,7 @@ uniform vec3 u_holes[6];       // xy centre, z radius (unit: m), as a 3 x 2 grid
 uniform vec4 u_table;          // length, width, cushion width, rail width (unit: m)
 uniform vec3 u_cloth_colour;   // sRGB
 uniform vec2 u_foot_spot;
+uniform vec2 u_head_spot;
 uniform float u_rail_height;   // (unit: m)
 
 // Distance to the nearest pocket hole's edge (negative inside). The holes come in a 3 x 2
@@ -265,6 +266,12 @@ void main() {
         float nap = texture(u_cloth_tex, v_uv * 12.0).r;
         vec4 baked = texture(u_cloth_light, (v_pos.xy - u_bake_rect.xy) / u_bake_rect.zw);
         vec3 shown = baked.rgb * (1.0 + baked.a * (2.0 * nap - 1.0));
+        // Worsted sheen: the cloth brightens toward grazing angles, more looking with the nap
+        // (from the head toward the foot, +x).
+        vec3 v = normalize(u_eye - v_pos);
+        float g = 1.0 - v.z;
+        g *= g;
+        shown *= 1.0 + 0.5 * g * g * (0.8 - 0.2 * v.x);
         // Under the rail tops the texture holds the rail's light; what shows of the cloth
         // there (through the holes, past their edge) is the pocket's black leather liner.
         float ox = max(-v_pos.x, v_pos.x - u_table.x), oy = max(-v_pos.y, v_pos.y - u_table.y);
@@ -284,7 +291,8 @@ void main() {
             return;
         }
         vec3 albedo = texture(u_wood_tex, vec2(v_uv.x / 1.3, v_uv.y / 0.16)).rgb;  // an sRGB texture: linear when sampled
-        c = lamps_light_cheap(v_pos, n, albedo, 6, 0.25) + albedo * 0.06;
+        // The bevels shine; the vertical sides, lit at grazing angles, barely.
+        c = lamps_light_cheap(v_pos, n, albedo, 6, 0.25 * smoothstep(0.3, 0.9, n.z)) + albedo * 0.06;
         o_colour = vec4(tone_map(apply_fog(c, v_pos)), 1.0);
         return;
     }
@@ -294,9 +302,13 @@ void main() {
         // Baking the cloth (seen from above, n = +z): the light at the mean nap (the nap
         // factor 0.72 + 0.56 nap is 1 at nap = 0.5) and in a, how much of it the nap modulates.
         vec3 albedo = u_cloth_linear;
-        // Foot spot.
-        albedo = mix(albedo, vec3(0.75), 1.0 - smoothstep(0.006, 0.0075, length(v_pos.xy - u_foot_spot)));
+        // The head and foot spots: thin white discs.
+        float spot = min(length(v_pos.xy - u_foot_spot), length(v_pos.xy - u_head_spot));
+        albedo = mix(albedo, vec3(0.75), 1.0 - smoothstep(0.006, 0.0075, spot));
         vec3 cloth = lamps_diffuse(v_pos, vec3(0.0, 0.0, 1.0), albedo) + albedo * 0.035;
+        // The cushions hide part of the lamps and the room from the cloth along them.
+        float to_nose = min(min(v_pos.x, u_table.x - v_pos.x), min(v_pos.y, u_table.y - v_pos.y));
+        cloth *= mix(0.72, 1.0, smoothstep(0.0, 0.12, max(to_nose, 0.0)));
         // Beyond the cushion noses and outside the hole: the pocket's black leather liner.
         float outside = max(max(-v_pos.x, v_pos.x - u_table.x), max(-v_pos.y, v_pos.y - u_table.y));
         float liner = smoothstep(0.0, 0.006, outside);
@@ -340,7 +352,7 @@ void main() {
         // The rail tops: the baked diffuse light and the lamps' highlights, view-dependent.
         vec4 baked = texture(u_cloth_light, (v_pos.xy - u_bake_rect.xy) / u_bake_rect.zw);
         if (baked.a < 0.1) discard;  // a pocket hole
-        c = baked.rgb * baked.rgb + lamps_specular(v_pos, vec3(0.0, 0.0, 1.0), 6, 0.25 * baked.a);
+        c = baked.rgb * baked.rgb + lamps_specular(v_pos, vec3(0.0, 0.0, 1.0), 7, 0.06 * baked.a);
         o_colour = vec4(tone_map(c), 1.0);  // above the cloth: no fog
         return;
     }
@@ -387,6 +399,7 @@ uniform vec3 u_colour;        // sRGB
 uniform int u_stripe;         // 1: a stripe ball (colour band on white)
 uniform int u_cue;            // 1: the cue ball
 uniform int u_number;         // 1-15: the number in the white circles
+uniform float u_number_scale; // the circles' size relative to a real ball's (>= 1: far away)
 uniform vec4 u_tint;          // rgb: mixed into the colour by a (ball in hand, illegal: red)
 uniform float u_alpha;        // < 1: drawn see-through (ball in hand)
 uniform sampler2D u_numbers;  // the numbers' atlas, 4 x 4 cells (render::make_number_atlas)
@@ -398,7 +411,10 @@ vec3 environment(vec3 r, vec3 p) {
     if (r.z < 0.0) {
         env = u_cloth_linear * 0.8 * smoothstep(-0.02, -0.3, r.z);
     } else {
-        env = vec3(0.012, 0.011, 0.010);
+        // The room: the lit walls round the horizon (the wainscot darker, just above it), the
+        // dim ceiling overhead.
+        env = mix(vec3(0.05, 0.038, 0.026), vec3(0.008, 0.0075, 0.007), smoothstep(0.0, 0.45, r.z));
+        env *= mix(0.5, 1.0, smoothstep(0.04, 0.1, r.z));
     }
     for (int i = 0; i < 3; ++i) {
         vec3 d = u_lamps[i].xyz - p;
@@ -430,10 +446,12 @@ void main() {
     if (u_stripe == 1 && abs(local.z) > 0.48) albedo = white;
     // The number's white circle, on both sides, and the number in it: the atlas cell of
     // u_number spans the circle; on the -x side the digits are mirrored to read from outside.
-    vec2 q = vec2(local.x >= 0.0 ? local.y : -local.y, local.z) * (1.0 / 0.456);
+    // The circle's radius: 0.456 R on a real ball, larger when the ball is small on screen.
+    float rho = 0.456 * u_number_scale;
+    vec2 q = vec2(local.x >= 0.0 ? local.y : -local.y, local.z) / rho;
     vec2 cell = vec2(float(u_number % 4), float(3 - u_number / 4));
     float ink = texture(u_numbers, (cell + 0.5 + 0.5 * clamp(q, -0.97, 0.97)) * 0.25).r;
-    if (u_cue == 0 && abs(local.x) > 0.89) albedo = mix(white, vec3(0.025, 0.022, 0.02), ink);
+    if (u_cue == 0 && abs(local.x) > sqrt(1.0 - rho * rho)) albedo = mix(white, vec3(0.025, 0.022, 0.02), ink);
     // The cue ball's red dots show its spin.
     if (u_cue == 1 && abs(local.x) > 0.985) albedo = vec3(0.75, 0.05, 0.04);
     albedo = to_linear(albedo);
@@ -582,6 +600,89 @@ void main() {
     vec3 albedo = to_linear(v_colour);
     vec3 c = lamps_light(v_pos, n, albedo, 90.0, 0.35) + albedo * 0.06;
     o_colour = vec4(tone_map(apply_fog(c, v_pos)), u_alpha);
+}
+)";
+
+// The room is large and dim, and llvmpipe pays for every pixel of it: its light (the lamps,
+// their shades' cut-off, the table blocking them from the floor below it, a little bounced
+// light), its fog and the tone mapping are computed per vertex; the pixels only add the pattern.
+const char* const kRoomVert = R"(
+layout(location = 0) in vec3 a_pos;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec3 a_colour;
+uniform mat4 u_view_proj;
+uniform vec3 u_eye;
+uniform vec4 u_lamps[3];
+uniform vec3 u_lamp_colour;
+uniform float u_exposure;
+uniform vec3 u_background;  // linear
+uniform vec4 u_footprint;   // the table's outline: xy min, xy max (unit: m)
+out vec3 v_pos;
+out vec3 v_shown;
+void main() {
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < 3; ++i) {
+        vec3 d = u_lamps[i].xyz - a_pos;
+        float inv = inversesqrt(dot(d, d));
+        vec3 l = d * inv;
+        // Below the cloth the table stands between the lamp and the point.
+        float t = clamp(-a_pos.z / max(d.z, 1e-4), 0.0, 1.0);
+        vec2 q = a_pos.xy + t * d.xy;
+        vec2 inside = smoothstep(u_footprint.xy - 0.15, u_footprint.xy + 0.15, q) *
+                      (1.0 - smoothstep(u_footprint.zw - 0.15, u_footprint.zw + 0.15, q));
+        float blocked = a_pos.z < -0.01 ? inside.x * inside.y : 0.0;
+        sum += smoothstep(0.25, 0.6, l.z) * max(dot(a_normal, l), 0.0) * inv * inv * (1.0 - blocked);
+    }
+    // Light bounced off the bright table and the room's own dim fill.
+    vec3 to_table = vec3(0.5 * (u_footprint.xy + u_footprint.zw), 0.0) - a_pos;
+    float bounce = max(dot(a_normal, normalize(to_table)), 0.0) / (1.0 + dot(to_table, to_table));
+    vec3 light = u_lamp_colour * sum + vec3(0.6, 0.55, 0.45) * bounce + vec3(0.05);
+    float fog = clamp((length(a_pos - u_eye) - 1.5) / 9.0, 0.0, 0.75);
+    vec3 c = mix(pow(a_colour, vec3(2.2)) * light, u_background, fog) * u_exposure;
+    c = clamp((c * (2.51 * c + 0.03)) / (c * (2.43 * c + 0.59) + 0.14), 0.0, 1.0);
+    vec3 s = sqrt(c);
+    v_shown = s * (1.2 - 0.2 * s);
+    v_pos = a_pos;
+    gl_Position = u_view_proj * vec4(a_pos, 1.0);
+}
+)";
+
+const char* const kRoomFrag = R"(
+in vec3 v_pos;
+in vec3 v_shown;
+layout(location = 0) out vec4 o_colour;
+uniform vec4 u_room;        // the walls: xy min, xy max (unit: m)
+uniform float u_floor_z;
+
+// A hash without sin (slow on llvmpipe).
+float hash(float x) {
+    x = fract(x * 0.1031);
+    x *= x + 33.33;
+    x *= x + x;
+    return fract(x);
+}
+
+void main() {
+    float shade = 1.0;
+    // Which surface from where the pixel lies (fewer varyings: each costs llvmpipe per pixel).
+    if (v_pos.z < u_floor_z + 0.001) {
+        // Oak planks 11 cm wide in staggered 1.2 m lengths, dark seams, a faint grain.
+        float row = floor(v_pos.y / 0.11);
+        float along = v_pos.x + 1.2 * hash(row);
+        float board = floor(along / 1.2);
+        shade = 0.8 + 0.35 * hash(row * 7.13 + board * 3.71);
+        float seam = min(fract(v_pos.y / 0.11), fract(along / 1.2) * 10.9);
+        shade *= mix(0.5, 1.0, smoothstep(0.0, 0.03, seam));
+        shade *= 0.94 + 0.12 * abs(fract(along * 9.0 + 0.4 * fract(v_pos.y * 13.0)) - 0.5);
+    } else if (v_pos.z < u_floor_z + 1.0) {
+        // The wainscot's panels: raised frames every 0.7 m along the wall and a rail on top.
+        vec2 off = min(v_pos.xy - u_room.xy, u_room.zw - v_pos.xy);
+        float along = off.x < off.y ? v_pos.y : v_pos.x;
+        float u = fract(along / 0.7), h = v_pos.z - u_floor_z;
+        float frame = min(min(u, 1.0 - u) * 7.0, min(abs(h - 0.12), abs(h - 0.88)) * 10.0);
+        shade = min(off.x, off.y) < 0.01 ? mix(0.6, 1.0, smoothstep(0.04, 0.12, frame)) : 1.0;
+    }
+    o_colour = vec4(v_shown * shade, 1.0);
 }
 )";
 

@@ -34,6 +34,8 @@ extern const char* const kCueShadowVert;      ///< the cue's soft shadow on the 
 extern const char* const kCueShadowFrag;
 extern const char* const kSolidVert;  ///< cue stick, aim guide: lit or flat-coloured geometry
 extern const char* const kSolidFrag;
+extern const char* const kRoomVert;  ///< the room: lit per vertex (its faces are cut in cells)
+extern const char* const kRoomFrag;  ///< floor planks, panelled walls, fog toward the background
 }  // namespace glsl
 
 }  // namespace render

@@ -152,6 +152,78 @@ void add_cushion(std::vector<Vertex>& out, const CushionOutline& o, const TableD
     }
 }
 
+/// A flat, upward quad on the cloth from lo to hi (texture coordinates = position).
+void add_flat(std::vector<Vertex>& out, glm::vec2 lo, glm::vec2 hi) {
+    add_quad(out, {lo, 0.0f}, {hi.x, lo.y, 0.0f}, {hi, 0.0f}, {lo.x, hi.y, 0.0f}, lo, {hi.x, lo.y},
+             hi, {lo.x, hi.y});
+}
+
+/// The cloth over [lo, hi] less the holes: round each hole a square tile, triangulated as a
+/// ring from the hole's circle out to the square; the rest in rectangles between the tiles.
+void add_cloth(std::vector<Vertex>& out, glm::vec2 lo, glm::vec2 hi,
+               const std::vector<PocketHole>& holes) {
+    std::vector<glm::vec4> tiles;  // x0, y0, x1, y1
+    for (const PocketHole& h : holes) {
+        const float half = h.radius + 0.02f;
+        tiles.push_back({glm::max(h.centre - half, lo), glm::min(h.centre + half, hi)});
+    }
+    std::vector<float> xs = {lo.x, hi.x}, ys = {lo.y, hi.y};
+    for (const glm::vec4& t : tiles) {
+        xs.insert(xs.end(), {t.x, t.z});
+        ys.insert(ys.end(), {t.y, t.w});
+    }
+    std::sort(xs.begin(), xs.end());
+    std::sort(ys.begin(), ys.end());
+    for (std::size_t i = 0; i + 1 < xs.size(); ++i)
+        for (std::size_t j = 0; j + 1 < ys.size(); ++j) {
+            const glm::vec2 a{xs[i], ys[j]}, b{xs[i + 1], ys[j + 1]};
+            if (b.x - a.x < 1e-6f || b.y - a.y < 1e-6f) continue;
+            const glm::vec2 mid = 0.5f * (a + b);
+            const bool in_tile = std::any_of(tiles.begin(), tiles.end(), [&](const glm::vec4& t) {
+                return mid.x > t.x && mid.x < t.z && mid.y > t.y && mid.y < t.w;
+            });
+            if (!in_tile) add_flat(out, a, b);
+        }
+    const glm::vec3 up{0, 0, 1};
+    const int steps = 48;
+    for (std::size_t k = 0; k < holes.size(); ++k) {
+        const glm::vec4 t = tiles[k];
+        const glm::vec2 c = holes[k].centre;
+        // The point of the tile's edge in direction d from the centre.
+        const auto on_square = [&](glm::vec2 d) {
+            float s = 1e9f;
+            if (d.x > 1e-6f) s = std::min(s, (t.z - c.x) / d.x);
+            if (d.x < -1e-6f) s = std::min(s, (t.x - c.x) / d.x);
+            if (d.y > 1e-6f) s = std::min(s, (t.w - c.y) / d.y);
+            if (d.y < -1e-6f) s = std::min(s, (t.y - c.y) / d.y);
+            return c + s * d;
+        };
+        for (int i = 0; i < steps; ++i) {
+            const float a0 = 6.2831853f * static_cast<float>(i) / steps;
+            const float a1 = 6.2831853f * static_cast<float>(i + 1) / steps;
+            const glm::vec2 d0{std::cos(a0), std::sin(a0)}, d1{std::cos(a1), std::sin(a1)};
+            const glm::vec2 p0 = c + holes[k].radius * d0, p1 = c + holes[k].radius * d1;
+            // A corner of the square between the two directions keeps the ring's outer edge on
+            // the square.
+            std::vector<glm::vec2> rim = {on_square(d0)};
+            for (const glm::vec2 corner : {glm::vec2(t.x, t.y), glm::vec2(t.z, t.y),
+                                           glm::vec2(t.z, t.w), glm::vec2(t.x, t.w)}) {
+                const glm::vec2 e = corner - c;
+                const float ang = std::atan2(e.y, e.x) < 0.0f ? std::atan2(e.y, e.x) + 6.2831853f
+                                                              : std::atan2(e.y, e.x);
+                if (ang > a0 && ang < a1) rim.push_back(corner);
+            }
+            rim.push_back(on_square(d1));
+            // A fan from p0 over the rim, then back to p1.
+            for (std::size_t r = 0; r + 1 < rim.size(); ++r)
+                add_tri(out, {{p0, 0.0f}, up, p0}, {{rim[r], 0.0f}, up, rim[r]},
+                        {{rim[r + 1], 0.0f}, up, rim[r + 1]});
+            add_tri(out, {{p0, 0.0f}, up, p0}, {{rim.back(), 0.0f}, up, rim.back()},
+                    {{p1, 0.0f}, up, p1});
+        }
+    }
+}
+
 }  // namespace
 
 TableDims table_dims(const physics::Table& table) {
@@ -189,10 +261,8 @@ TableMesh build_table_mesh(const physics::Table& table) {
     const TableDims d = table_dims(table);
     const float L = static_cast<float>(table.length()), W = static_cast<float>(table.width());
     const float in = d.cushion_width, out = d.cushion_width + d.rail_width;
-    // Cloth: the whole footprint (holes are painted by the cloth shader).
-    add_quad(m.cloth, {-out, -out, 0}, {L + out, -out, 0}, {L + out, W + out, 0},
-             {-out, W + out, 0}, {-out, -out}, {L + out, -out}, {L + out, W + out},
-             {-out, W + out});
+    // Cloth: the whole footprint, with the pockets' holes cut out.
+    add_cloth(m.cloth, {-out, -out}, {L + out, W + out}, pocket_holes(table));
     for (const auto& l : table.lines)
         if (l.rail >= 0) add_cushion(m.cushions, outline_of(table, l), d);
 

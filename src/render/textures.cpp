@@ -58,9 +58,12 @@ TextureData make_cloth_texture(int size) {
             const float grain = rand01(x, y, 2) - 0.5f;
             const float mottle =
                 value_noise(u, v, 4, 4, 3) + 0.5f * value_noise(u, v, 16, 16, 4) - 0.75f;
-            const float weave = ((x + y) % 2 == 0 ? 1.0f : -1.0f);
+            // A 2/2 twill: threads of two texels (about 0.3 mm) crossing on the diagonal.
+            const float weave = ((x + y) / 2) % 2 == 0 ? 1.0f : -1.0f;
+            const float thread = (x % 2 == 0) ? 0.5f : -0.5f;
             t.pixels[static_cast<std::size_t>(y) * size + x] =
-                to_byte(128.0f + 34.0f * fibre + 14.0f * grain + 22.0f * mottle + 4.0f * weave);
+                to_byte(128.0f + 30.0f * fibre + 12.0f * grain + 22.0f * mottle + 10.0f * weave +
+                        4.0f * thread);
         }
     return t;
 }

@@ -174,7 +174,7 @@ TEST(Cameras, OrbitLooksAtTheTargetFromTheDistance) {
 TEST(Cameras, LerpRunsFromOneCameraToTheOther) {
     const physics::Table table = physics::build_table(*physics::table_preset("9ft"));
     const render::Camera a = render::overhead_camera(table, 16.0f / 9.0f);
-    const render::Camera b = render::cue_ball_camera({0.6f, 0.6f}, 0.2f);
+    const render::Camera b = render::cue_ball_camera(table, 0.028575f, {{0.6f, 0.6f}, 0.2f});
     for (float t : {0.0f, 1.0f}) {
         const render::Camera c = render::lerp(a, b, t);
         const render::Camera& e = t == 0.0f ? a : b;

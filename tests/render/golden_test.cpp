@@ -99,6 +99,46 @@ TEST_F(GoldenTest, BallInHandAndTray) {
     check("ball_in_hand", draw(render::ball_in_hand_scene(kAspect)));
 }
 
+TEST_F(GoldenTest, CueBallViewAtARail) {
+    check("rail_view", draw(render::rail_view_scene(kAspect)));
+}
+
+TEST_F(GoldenTest, RaisedCueFromAbove) {
+    check("raised_cue", draw(render::raised_cue_scene(kAspect)));
+}
+
+TEST_F(GoldenTest, PocketWithADroppingBall) {
+    check("pocket", draw(render::pocket_scene(kAspect)));
+}
+
+TEST_F(GoldenTest, RoomRoundTheTable) {
+    check("room", draw(render::room_scene(kAspect)));
+}
+
+TEST_F(GoldenTest, AMovingCameraIsDrawnSmallerAndAStillOneInFull) {
+    const render::DemoScene scene = render::cue_view_scene(kAspect);
+    render::FrameView turned = scene.frame();
+    turned.camera.eye.y += 0.05f;
+    render::Renderer renderer(scene.table, scene.ball_radius);
+    render::OffscreenTarget target(kWidth, kHeight, 4);
+    auto frame = [&](const render::FrameView& v) {
+        target.bind();
+        renderer.draw(v, kWidth, kHeight);
+        target.resolve();
+        return render::read_pixels(kWidth, kHeight);
+    };
+    frame(scene.frame());
+    const render::Image moving = frame(turned);  // the camera moved: drawn at 3/4 size
+    const render::Image still = frame(turned);   // the same camera again: in full
+    render::DemoScene turned_scene = scene;
+    turned_scene.camera = turned.camera;
+    const render::Image full = draw(turned_scene);
+    EXPECT_EQ(render::compare(still, full, 0).max_channel_diff, 0);
+    const render::ImageDiff d = render::compare(moving, full, 6);
+    EXPECT_GT(d.fraction_over, 0.002);  // softer edges, no multisampling
+    EXPECT_LT(d.fraction_over, 0.2);    // but the same picture
+}
+
 TEST_F(GoldenTest, RendersAreRepeatable) {
     const render::DemoScene scene = render::racked_scene(kAspect);
     const render::Image a = draw(scene), b = draw(scene);
