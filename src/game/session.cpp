@@ -124,15 +124,19 @@ rules::BallInHand Session::ball_in_hand() const {
     return rules::BallInHand::none;
 }
 
-std::vector<physics::BallState> Session::balls() const {
+std::vector<physics::BallState> balls_at_rest(const rules::GameState& state) {
     std::vector<physics::BallState> out;
-    for (const auto& [id, p] : state_.positions) {
+    for (const auto& [id, p] : state.positions) {
         physics::BallState b;
         b.id = id;
         b.pos = p;
         out.push_back(b);
     }
     return out;
+}
+
+std::vector<physics::BallState> Session::balls() const {
+    return balls_at_rest(state_);
 }
 
 std::optional<rules::Choice> Session::choice() const {

@@ -54,6 +54,9 @@ enum class Phase {
     game_over,       ///< restart() starts the next game
 };
 
+/// The balls at rest where a state puts them, by id (the cue ball when it has a position).
+std::vector<physics::BallState> balls_at_rest(const rules::GameState& state);
+
 /// An action that the rules or the table do not allow; what() says why. The session is unchanged.
 class Refused : public std::runtime_error {
   public:

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "game/json_field.hpp"
+#include "game/session.hpp"
 #include "game/state_json.hpp"
 #include "physics/table.hpp"
 #include "rules/names.hpp"
@@ -110,14 +111,7 @@ SharedShot read_shot(const Field& f) {
 }  // namespace
 
 std::vector<physics::BallState> SharedShot::balls() const {
-    std::vector<physics::BallState> out;
-    for (const auto& [id, pos] : state.positions) {
-        physics::BallState b;
-        b.id = id;
-        b.pos = pos;
-        out.push_back(b);
-    }
-    return out;
+    return balls_at_rest(state);
 }
 
 std::string shot_link(const SharedShot& shot) {
