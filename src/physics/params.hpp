@@ -50,6 +50,10 @@ struct Models {
     CushionModel cushion = CushionModel::han2005;
 };
 
+/// The latest time an event may have (unit: s): a shot with a later one is truncated. Real shots
+/// end within a minute; only a friction of zero keeps balls going that long (traps_test).
+inline constexpr double kHorizon = 1e6;
+
 /// Options of one simulation that are not physical constants.
 struct SimOptions {
     Models models;

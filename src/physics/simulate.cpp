@@ -163,7 +163,7 @@ class Simulation {
     /// One turn of the pipeline. False once every ball is at rest, or at the event cap.
     bool step() {
         const Candidate next = queue_.earliest();
-        if (std::isinf(next.time)) {
+        if (!(next.time <= kHorizon)) {
             // With a friction of zero a ball can move forever: that shot never ends, and is
             // reported like one cut at the cap.
             truncated_ = truncated_ || any_moving();

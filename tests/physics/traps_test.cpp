@@ -250,5 +250,28 @@ TEST(Traps, SlowBallNudgingARailComesToRest) {
     EXPECT_GE(shot.final_states()[0].pos.y, R - 1e-9);
 }
 
+TEST(Traps, FrictionlessClothEndsAtTheHorizonWithFiniteNumbers) {
+    // Found by fuzz_simulate: with mu_slide = 0 a ball left with spin and no velocity slides on
+    // the spot forever, touching another; their contact was found again at ever later times
+    // (1e89 s, 1e101 s, ...) until the time overflowed into NaNs. A shot ends at the horizon.
+    TableSpec spec = *table_preset("7ft");
+    spec.pockets = false;
+    const Table table = build_table(spec);
+    Params p = kParams;
+    p.mu_ball = 0.06;
+    p.e_cushion = 0.3;
+    p.mu_slide = 0.0;
+    const std::vector<BallState> balls = rack(RackType::eight_ball, table, p, 6, std::nullopt);
+    Stroke stroke;
+    stroke.speed = 7.3;
+    const Shot shot = simulate(table, p, balls, &stroke);
+    EXPECT_TRUE(shot.truncated());
+    for (const Event& e : shot.events()) {
+        ASSERT_LE(e.time, kHorizon);
+        for (int k = 0; k < e.ball_count; ++k)
+            ASSERT_TRUE(std::isfinite(e.balls[static_cast<std::size_t>(k)].pos.x));
+    }
+}
+
 }  // namespace
 }  // namespace physics
