@@ -98,6 +98,17 @@ std::vector<physics::BallState> Controller::balls_now() const {
     return session_.balls();
 }
 
+void Controller::play_shared(const physics::Stroke& stroke) {
+    stop_thinking();  // the shot is the link's, whoever's seat it is
+    computer_decision_.reset();
+    aim_.heading_deg = stroke.heading_deg;
+    aim_.power = power_of_speed(stroke.speed);
+    aim_.side = stroke.side;
+    aim_.top = stroke.top;
+    aim_.elevation_deg = stroke.elevation_deg;
+    play(stroke);
+}
+
 bool Controller::busy() const {
     return playback_.moving() || thinking_.valid() || computer_decision_.has_value();
 }

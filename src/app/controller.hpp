@@ -141,6 +141,10 @@ class Controller {
     void restart();  ///< a new rack (the next game of the session)
     /// Replaces the session (a New Game with other rules or names, or a loaded game).
     void replace(game::Session session, ControllerOptions options);
+    /// Plays a shared shot's stroke at once, whoever's seat it is, on a session just set up at
+    /// the shot's position (app/shot_sharing.hpp), as any shot: Replay shows it again, and play
+    /// goes on from where it left the balls.
+    void play_shared(const physics::Stroke& stroke);
 
   private:
     void begin_turn();

@@ -5,6 +5,7 @@
 #include <chrono>
 
 #include "app/seats.hpp"
+#include "app/shot_sharing.hpp"
 #include "game/json_field.hpp"
 
 namespace app {
@@ -48,6 +49,12 @@ GameSetup set_up_game(const AppOptions& o) {
     g.controller.seed = seed;
     g.controller.playback_speed = o.playback_speed;
 
+    if (o.shot) {
+        const game::SharedShot shot = game::read_shot_link(*o.shot);  // LoadError to the caller
+        g.session = session_of(shot, seat_names(s.names, s.players), seed);
+        g.shared_stroke = shot.stroke;
+        return g;
+    }
     if (o.load) {
         g.session = game::Session::load_file(*o.load);  // a bad file: LoadError to the caller
         return g;

@@ -244,6 +244,12 @@ void information_bar(const Controller& c, PanelState& st, PanelActions& out) {
     if (!c.last_shot_words().empty()) ImGui::TextDisabled("%s", c.last_shot_words().c_str());
     if (!c.aim_foul().empty()) ImGui::TextColored(warning, "%s", c.aim_foul().c_str());
     if (!c.refusal().empty()) ImGui::TextColored(warning, "%s", c.refusal().c_str());
+    if (!st.link_note.empty() && st.link_note_serial == c.shot_serial()) {
+        if (st.link_note_is_error)
+            ImGui::TextColored(warning, "%s", st.link_note.c_str());
+        else
+            ImGui::TextUnformatted(st.link_note.c_str());
+    }
     ImGui::PopTextWrapPos();
     if (std::optional<rules::Choice> choice = c.session().choice(); choice && c.human_to_act())
         for (rules::ChoiceOption o : choice->options)
@@ -302,13 +308,19 @@ void play_buttons(const Controller& c, const Settings& settings, PanelState& st,
     } else {
         ImGui::Dummy(ImVec2(0.0f, ImGui::GetFrameHeight()));
     }
+    const float half = (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x) / 2;
     if (c.moving()) {
-        if (full_button(st, "Skip")) out.skip = true;
+        if (ImGui::Button("Skip", ImVec2(half, 0.0f))) out.skip = true;
+        remember(st, "Skip");
     } else if (c.playback().has_shot() && !c.busy()) {
-        if (full_button(st, "Replay")) out.replay = true;
+        if (ImGui::Button("Replay", ImVec2(half, 0.0f))) out.replay = true;
+        remember(st, "Replay");
     } else {
-        ImGui::Dummy(ImVec2(0.0f, ImGui::GetFrameHeight()));
+        ImGui::Dummy(ImVec2(half, ImGui::GetFrameHeight()));
     }
+    ImGui::SameLine();
+    if (ImGui::Button("Copy shot link", ImVec2(half, 0.0f))) out.copy_link = true;
+    remember(st, "Copy shot link");
     const auto [new_game, controls] = button_pair(st, "New Game...", "Controls");
     if (new_game) open_new_game(st, settings);
     if (controls) st.controls_open = true;
@@ -325,8 +337,8 @@ void controls_dialog(PanelState& st) {
          {"Right-drag: aim; release: strike", "Left-drag: aim (or move the ball in hand)",
           "Shift while aiming: finer", "Click a ball, then a pocket: call",
           "Arrows: aim (Shift finer) and power", "Space: strike", "S or Enter: skip the shot",
-          "P: replay it", "H: hint", "G: aim guide level", "V: change view, O: free view",
-          "Wheel: zoom", "R: restart, Esc: menu, F11: fullscreen"})
+          "P: replay it", "H: hint", "Ctrl+V: open a shot link", "G: aim guide level",
+          "V: change view, O: free view", "Wheel: zoom", "R: restart, Esc: menu, F11: fullscreen"})
         ImGui::TextUnformatted(line);
     const bool close = ImGui::Button("Close", ImVec2(-1.0f, 0.0f));
     remember(st, "Close");

@@ -82,8 +82,9 @@ std::string_view link_body(std::string_view text) {
     if (const std::size_t hash = text.find('#'); hash != std::string_view::npos)
         text.remove_prefix(hash + 1);
     if (!text.starts_with(kPrefix))
-        throw LoadError("link", "not a shot link: it starts with \"shot=\" (or is an address "
-                                "whose part after '#' does)");
+        throw LoadError("link",
+                        "not a shot link: it starts with \"shot=\" (or is an address "
+                        "whose part after '#' does)");
     return text.substr(kPrefix.size());
 }
 
@@ -135,8 +136,9 @@ SharedShot read_shot_link(std::string_view text) {
                                             body.substr(0, dot1), kVersion));
     const std::string json = from_base64url(body.substr(dot2 + 1));
     if (fmt::format("{:08x}", checksum(json)) != body.substr(dot1 + 1, dot2 - dot1 - 1))
-        throw LoadError("link", "the shot does not match its checksum (the link was cut short "
-                                "or changed): copy the whole link again");
+        throw LoadError("link",
+                        "the shot does not match its checksum (the link was cut short "
+                        "or changed): copy the whole link again");
     const nlohmann::json doc = parse_document(json, "link.shot");
     return read_shot(Field(doc, "link.shot"));
 }
