@@ -33,8 +33,10 @@
 #include "app/shot_sharing.hpp"
 #include "app/status_report.hpp"
 #include "audio/engine.hpp"
+#include "game/atomic_file.hpp"
 #include "game/json_field.hpp"
 #include "game/state_json.hpp"
+#include "game/text_file.hpp"
 #include "render/headless_context.hpp"
 #include "render/image.hpp"
 
@@ -77,6 +79,7 @@ struct Table {
         panel.notice_is_error = setup.notice_is_error;
         saved = setup.settings;
         controller.set_power(setup.settings.power);
+        if (setup.practice) start_practice(setup.settings.game);
         if (setup.shared_stroke) {
             controller.play_shared(*setup.shared_stroke);
             note_link(
@@ -128,6 +131,41 @@ struct Table {
         note_link("Opened the pasted shot link: Replay (P) shows it again, or play on.", false);
     }
 
+    void start_practice(rules::Game game) {
+        ControllerOptions opts = setup.controller;
+        opts.seed = fresh_seed();
+        controller.start_practice(
+            game::Practice(game, physics::TableSpec{}, physics::Params{}, opts.seed), opts);
+    }
+
+    /// Save position: the practice position as coolaaber-cli simulate's input.
+    void save_position() {
+        try {
+            std::error_code ec;
+            std::filesystem::create_directories(setup.position_path.parent_path(), ec);
+            game::write_file_atomically(setup.position_path, controller.practice()->to_json());
+            note_link("Saved the position to " + setup.position_path.string() +
+                          " (coolaaber-cli simulate reads it).",
+                      false);
+        } catch (const std::exception& e) {
+            note_link(std::string("The position was not saved: ") + e.what(), true);
+        }
+    }
+
+    /// Load position: the position saved last, or why it cannot be read (nothing changes).
+    void load_position() {
+        try {
+            game::Practice p =
+                game::Practice::from_json(game::read_regular_file(setup.position_path));
+            ControllerOptions opts = setup.controller;
+            opts.seed = fresh_seed();
+            controller.start_practice(std::move(p), opts);
+            note_link("Loaded the position from " + setup.position_path.string() + ".", false);
+        } catch (const game::LoadError& e) {
+            note_link(std::string("The position could not be loaded: ") + e.what(), true);
+        }
+    }
+
     void paste_link() {
         char* text = SDL_GetClipboardText();
         const std::string pasted = text ? text : "";
@@ -173,6 +211,9 @@ struct Table {
         if (a.strike) controller.strike();
         if (a.hint) controller.hint();
         if (a.copy_link) copy_link();
+        if (a.try_again) controller.try_again();
+        if (a.save_position && controller.practicing()) save_position();
+        if (a.load_position) load_position();
         if (a.spin) controller.set_spin(a.spin->first, a.spin->second);
         if (a.elevation_deg) controller.set_elevation(*a.elevation_deg);
         if (a.choice) controller.choose(*a.choice);
@@ -189,6 +230,7 @@ struct Table {
             opts.players = s.players;
             opts.seed = fresh_seed();
             try {
+                if (a.new_game->practice) return start_practice(s.game);
                 controller.replace(game::Session(new_game_config(s, opts.seed)), opts);
             } catch (const std::exception& e) {
                 panel.notice = e.what();
@@ -212,7 +254,10 @@ struct Table {
     }
 
     void save_and_close() {
-        const std::string err = save_on_exit(controller.session(), setup.autosave_path);
+        // Practice is not a game: the game saved before it stays as it was.
+        const std::string err = controller.practicing()
+                                    ? std::string()
+                                    : save_on_exit(controller.session(), setup.autosave_path);
         if (!err.empty())
             std::fprintf(stderr, "coolaaber: the game was not saved: %s\n", err.c_str());
         if (setup.settings_path.empty()) return;
@@ -228,6 +273,15 @@ struct Table {
 std::string table_key(const game::Session& s) {
     return game::to_json(s.config().table).dump() +
            fmt::format("{}", s.config().params.ball_radius);
+}
+
+// Where each ball is seen in the table view (the status file's test hook).
+std::map<int, std::array<double, 2>> ball_pixels(const Table& t, int width, int height) {
+    std::map<int, std::array<double, 2>> out;
+    const double R = t.controller.session().config().params.ball_radius;
+    for (const physics::BallState& b : t.controller.balls_now())
+        if (auto px = screen_point(t.last_camera, width, height, b.pos, R)) out[b.id] = *px;
+    return out;
 }
 
 bool key_shift() {
@@ -504,17 +558,19 @@ int run_window(const AppOptions& options) {
             SDL_GL_SwapWindow(window);
             ++frames;
             if (status)
-                status->write(status_json(t.controller, t.setup.settings, t.rig.mode(),
-                                          {t.panel.widgets,
-                                           frames,
-                                           scene.cue.has_value(),
-                                           scene.show_aim,
-                                           scene.ball_in_hand.has_value(),
-                                           static_cast<int>(scene.aim.marks.size()),
-                                           scene.show_aim && scene.aim.illegal,
-                                           {w, h},
-                                           static_cast<int>(layout.width),
-                                           t.link_note_shown()}));
+                status->write(
+                    status_json(t.controller, t.setup.settings, t.rig.mode(),
+                                {t.panel.widgets,
+                                 frames,
+                                 scene.cue.has_value(),
+                                 scene.show_aim,
+                                 scene.ball_in_hand.has_value(),
+                                 static_cast<int>(scene.aim.marks.size()),
+                                 scene.show_aim && scene.aim.illegal,
+                                 {w, h},
+                                 static_cast<int>(layout.width),
+                                 t.link_note_shown(),
+                                 ball_pixels(t, painter->view_width(), painter->height())}));
         }
         t.save_and_close();
         ImGui_ImplOpenGL3_Shutdown();

@@ -27,6 +27,8 @@ GameSetup set_up_game(const AppOptions& o) {
     GameSetup g;
     g.settings_path = config_folder() / "settings.json";
     g.autosave_path = data_folder() / "saved-game.json";
+    g.position_path = data_folder() / "practice-position.json";
+    g.practice = o.practice;
     LoadedSettings loaded = load_settings(g.settings_path);
     g.settings = loaded.settings;
     if (loaded.message) {

@@ -1,5 +1,5 @@
 // coolaaber: the game. Options (docs/app.md):
-//   --size WxH  --fullscreen  --game 8ball|9ball  --load FILE  --shot LINK
+//   --size WxH  --fullscreen  --game 8ball|9ball  --load FILE  --shot LINK  --practice
 //   --view overhead|cueball
 //   --screenshot FILE (render the first frame offscreen, write a PNG, exit)
 //   --players human,ai:3  --seed N  --noise X  --playback-speed X  --status-file FILE (tests)
@@ -39,6 +39,8 @@ void add_options(CLI::App& cli, CommandLine& line) {
     cli.add_option("--shot", line.shot,
                    "open a shot link (shot=1.… or an address ending in #shot=1.…) and play it")
         ->excludes(load);
+    cli.add_flag("--practice", o.practice,
+                 "practise alone at the game's rack (8ball or 9ball, see --game), no rules");
     cli.add_option("--view", line.view, "overhead or cueball")
         ->check(CLI::IsMember({"overhead", "cueball"}));
     cli.add_option("--screenshot", line.screenshot,

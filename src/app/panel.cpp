@@ -155,11 +155,15 @@ void new_game_dialog(PanelState& st, PanelActions& out) {
     ImGui::SameLine();
     ImGui::RadioButton("9-ball", &game, 1);
     d.game = game == 0 ? rules::Game::eight_ball : rules::Game::nine_ball;
+    ImGui::Checkbox("Practice (one player, no rules)", &d.practice);
+    remember(st, "Practice (one player, no rules)");
     std::vector<std::string> kinds{"human", "random"};
     for (int level = 1; level <= 5; ++level) kinds.push_back(fmt::format("ai:{}", level));
-    for (std::size_t seat = 0; seat < 2; ++seat) seat_row(d, seat, kinds);
+    if (!d.practice)
+        for (std::size_t seat = 0; seat < 2; ++seat) seat_row(d, seat, kinds);
     if (auto g = aim_guide_combo(st, d.aim_guide)) d.aim_guide = *g;
-    if (d.game == rules::Game::eight_ball && ImGui::CollapsingHeader("House rules (8-ball)"))
+    if (!d.practice && d.game == rules::Game::eight_ball &&
+        ImGui::CollapsingHeader("House rules (8-ball)"))
         house_rules_editor(d.house_rules);
     ImGui::Separator();
     const bool start = ImGui::Button("Start", ImVec2(px(120), 0));
@@ -189,12 +193,14 @@ void replay_label(const Controller& c) {
 }
 
 // The title line and any notice (e.g. a saved game set aside), dismissed with OK.
-void header(const game::Session& s, PanelState& st) {
+void header(const Controller& c, PanelState& st) {
+    const game::Session& s = c.session();
     ImGui::TextColored(accent, "COOLAABER");
     ImGui::SameLine();
-    ImGui::TextDisabled("%s  game %d",
-                        s.config().game == rules::Game::eight_ball ? "8-ball" : "9-ball",
-                        s.game_number() + 1);
+    const std::string which =
+        c.practicing() ? "practice" : fmt::format("game {}", s.game_number() + 1);
+    ImGui::TextDisabled("%s  %s", s.config().game == rules::Game::eight_ball ? "8-ball" : "9-ball",
+                        which.c_str());
     if (!st.notice.empty()) {
         ImGui::PushTextWrapPos(0.0f);
         if (st.notice_is_error)
@@ -251,6 +257,14 @@ void information_bar(const Controller& c, PanelState& st, PanelActions& out) {
             ImGui::TextUnformatted(st.link_note.c_str());
     }
     ImGui::PopTextWrapPos();
+    if (c.practicing() && !c.busy()) {
+        ImGui::BeginDisabled(!c.practice()->can_try_again());
+        if (full_button(st, "Try again")) out.try_again = true;
+        ImGui::EndDisabled();
+        const auto [save, load] = button_pair(st, "Save position", "Load position");
+        out.save_position = save;
+        out.load_position = load;
+    }
     if (std::optional<rules::Choice> choice = c.session().choice(); choice && c.human_to_act())
         for (rules::ChoiceOption o : choice->options)
             if (full_button(st, choice_words(o).c_str())) out.choice = o;
@@ -399,7 +413,7 @@ PanelActions draw_panel(const Controller& c, const Settings& settings, PanelStat
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                      ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar |
                      ImGuiWindowFlags_NoScrollWithMouse);
-    header(c.session(), st);
+    header(c, st);
     original_controls(c, settings, st, out);
     ImGui::BeginChild("##middle", ImVec2(0.0f, -footer_height()));
     information_bar(c, st, out);

@@ -22,6 +22,7 @@ struct NewGame {
     std::array<std::string, 2> players{"human", "human"};
     rules::Options house_rules;
     AimGuide aim_guide = AimGuide::lines;
+    bool practice = false;  ///< one player at this game's table and balls, no rules
 };
 
 struct PanelActions {
@@ -35,7 +36,10 @@ struct PanelActions {
     bool replay = false;
     bool strike = false;
     bool hint = false;
-    bool copy_link = false;                         ///< Copy shot link
+    bool copy_link = false;  ///< Copy shot link
+    bool try_again = false;  ///< practice: the position before the last shot
+    bool save_position = false;
+    bool load_position = false;
     std::optional<std::pair<double, double>> spin;  ///< side, top (unit: R)
     std::optional<double> elevation_deg;
     std::optional<rules::ChoiceOption> choice;

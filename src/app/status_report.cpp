@@ -96,6 +96,10 @@ std::string status_json(const Controller& c, const Settings& s, CameraMode view,
     j["window"] = frame.window;
     j["panel_width"] = frame.panel_width;
     j["link_note"] = frame.link_note;
+    nlohmann::ordered_json px = nlohmann::ordered_json::object();
+    for (const auto& [id, at] : frame.ball_px) px[std::to_string(id)] = at;
+    j["ball_px"] = std::move(px);
+    j["practice"] = c.practicing();
     j["drawn"] = {{"cue", frame.cue},
                   {"aim_guide", frame.aim_guide},
                   {"ball_in_hand", frame.ball_in_hand},

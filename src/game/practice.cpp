@@ -49,9 +49,9 @@ Practice::Practice(physics::TableSpec table, physics::Params params)
 Practice::Practice(rules::Game game, physics::TableSpec table, physics::Params params,
                    std::uint64_t seed)
     : Practice(std::move(table), std::move(params)) {
-    const physics::RackType type = game == rules::Game::eight_ball
-                                       ? physics::RackType::eight_ball
-                                       : physics::RackType::nine_ball;
+    game_ = game;
+    const physics::RackType type = game == rules::Game::eight_ball ? physics::RackType::eight_ball
+                                                                   : physics::RackType::nine_ball;
     for (const physics::BallState& b : physics::rack(type, table_, params_, seed))
         if (b.id != 0) balls_[b.id] = b.pos;
     balls_[0] = free_spot_near_head();

@@ -27,6 +27,9 @@ class Practice {
     Practice(rules::Game game, physics::TableSpec table, physics::Params params,
              std::uint64_t seed);
 
+    /// Whose balls these are: the game racked, or for a loaded position 8-ball when a ball
+    /// above the 9 is on the table, else 9-ball.
+    rules::Game game() const { return game_; }
     const physics::TableSpec& table_spec() const { return spec_; }
     const physics::Table& table() const { return table_; }
     const physics::Params& params() const { return params_; }
@@ -62,6 +65,7 @@ class Practice {
     std::optional<std::string> check_place(int id, physics::Vec2 pos) const;
     physics::Vec2 free_spot_near_head() const;
 
+    rules::Game game_ = rules::Game::eight_ball;
     physics::TableSpec spec_;
     physics::Params params_;
     physics::Table table_;

@@ -43,9 +43,8 @@ Practice Practice::from_json(std::string_view text) {
     const nlohmann::json doc = parse_document(text, "position");
     const Field root(doc, "position");
     root.expect_object({"table", "params", "balls", "strike"});
-    const physics::Params params = root.find("params")
-                                       ? read_params(root.at("params"), Fields::required)
-                                       : physics::Params{};
+    const physics::Params params =
+        root.find("params") ? read_params(root.at("params"), Fields::required) : physics::Params{};
     const physics::TableSpec spec =
         root.find("table") ? read_table(root.at("table"), params.ball_radius, Fields::required)
                            : physics::TableSpec{};
@@ -54,12 +53,14 @@ Practice Practice::from_json(std::string_view text) {
     const Field balls = root.at("balls");
     for (std::size_t i = 0; i < balls.array_size(); ++i) {
         const auto [id, pos] = read_ball(balls.at(i));
-        if (p.balls_.count(id)) balls.at(i).at("id").fail(fmt::format("ball {} is listed twice", id));
+        if (p.balls_.count(id))
+            balls.at(i).at("id").fail(fmt::format("ball {} is listed twice", id));
         if (std::optional<std::string> why = p.check_place(id, pos))
             balls.at(i).at("pos").fail(*why);
         p.balls_[id] = pos;
     }
     if (!p.balls_.count(0)) balls.fail("the cue ball (id 0) is missing");
+    p.game_ = p.balls_.rbegin()->first > 9 ? rules::Game::eight_ball : rules::Game::nine_ball;
     return p;
 }
 

@@ -479,9 +479,71 @@ def shared_shot(exe, work):
           f"a cut link on the command line: exit 2, one line ({p.returncode}, {p.stderr.strip()!r})")
 
 
+def drag(g, frm, to, steps=8):
+    g.move(*frm)
+    time.sleep(0.15)
+    g.xdo("mousedown", "--window", g.window, "1")
+    for i in range(1, steps + 1):
+        g.move(frm[0] + (to[0] - frm[0]) * i / steps, frm[1] + (to[1] - frm[1]) * i / steps)
+        time.sleep(0.05)
+    g.xdo("mouseup", "--window", g.window, "1")
+    time.sleep(0.3)
+
+
+def practice(exe, work):
+    """--practice: a ball dragged to a free spot moves there, onto another ball it stays put with
+    the reason; a shot plays; Try again puts back the position exactly; Save position writes what
+    coolaaber-cli simulate reads; Load position brings it back."""
+    g = Game(exe, work, "--practice", "--game", "9ball", "--view", "overhead", "--seed", "4")
+    try:
+        s = g.wait(lambda s: s["practice"] and not s["busy"], 30, "practice")
+        check(s["balls_on_table"] == 9 and s["info"][0].startswith("Practice"), f"a 9-ball rack to practise on: {s['info']}")
+        g.screenshot("practice-start.png")
+        five = s["ball_px"]["5"]
+        drag(g, five, (five[0] - 200, five[1] + 60))
+        s = g.wait(lambda s: s["positions"]["5"] != g.status["positions"]["5"], 10, "the 5 moved")
+        moved = s["ball_px"]["5"]
+        check(abs(moved[0] - (five[0] - 200)) < 3 and abs(moved[1] - (five[1] + 60)) < 3,
+              f"the 5 lies where it was dropped ({moved} for {(five[0] - 200, five[1] + 60)})")
+        cue = s["ball_px"]["0"]
+        drag(g, moved, cue)
+        s = g.wait(lambda s: "on top of the cue ball" in s["refusal"], 10, "the refusal")
+        check(s["positions"]["5"] != s["positions"]["0"], f"the 5 stays off the cue ball: {s['refusal']!r}")
+        g.screenshot("practice-dragged.png")
+        before = s["positions"]
+        key(g, "space")
+        g.wait(lambda s: s["moving"], 10, "the shot")
+        s = g.wait(lambda s: not s["moving"] and not s["busy"], 60, "the balls to stop")
+        check(s["positions"] != before, f"the shot moved the balls ({s['last_shot']!r})")
+        g.screenshot("practice-shot.png")
+        g.click_widget("Try again")
+        s = g.wait(lambda s: s["positions"] == before, 10, "the position before the shot")
+        check(True, "Try again puts back the position before the shot, every number")
+        g.click_widget("Save position")
+        s = g.wait(lambda s: "Saved the position" in s["link_note"], 10, "the save")
+        path = os.path.join(work, "data", "coolaaber", "practice-position.json")
+        with open(path) as f:
+            saved = json.load(f)
+        check({str(b["id"]): b["pos"] for b in saved["balls"]} == before, "the file holds the position exactly")
+        saved["strike"] = {"speed": 2.0, "heading_deg": 0.0}
+        out = subprocess.run([os.environ["COOLAABER_CLI"], "simulate"], input=json.dumps(saved), capture_output=True,
+                             text=True, timeout=60)
+        check(out.returncode == 0 and "final" in json.loads(out.stdout), f"coolaaber-cli simulate reads it ({out.stderr.strip()!r})")
+        nine = s["ball_px"]["9"]
+        drag(g, nine, (nine[0] + 120, nine[1] - 50))
+        s = g.wait(lambda s: s["positions"] != before, 10, "the 9 moved")
+        g.click_widget("Load position")
+        s = g.wait(lambda s: "Loaded the position" in s["link_note"], 10, "the load")
+        check(s["positions"] == before, "Load position brings the saved position back")
+        g.screenshot("practice-loaded.png")
+    finally:
+        g.close()
+
+
 if __name__ == "__main__":
     test, exe, work = sys.argv[1], sys.argv[2], sys.argv[3]
     {"controls": controls, "game": whole_game, "hinted": hinted_game, "display": no_display,
      "choice": no_choice_after_scratch, "kitchen": kitchen_foul, "guide": guide_marks,
-     "resize": resize, "shot": shared_shot}[test](exe, work)
+     "resize": resize, "shot": shared_shot,
+     "practice": practice}[test](exe, work)
     print("passed")

@@ -58,7 +58,8 @@ TEST(Practice, AnyBallGoesAnywhereItCanLieAndNowhereElse) {
     p.play(break_stroke());
     for (int id = 1; id <= 15; ++id)
         if (!p.balls().count(id)) {
-            EXPECT_EQ(p.check_move(id, {1.0, 0.6}), "The " + std::to_string(id) + " is not on the table.");
+            EXPECT_EQ(p.check_move(id, {1.0, 0.6}),
+                      "The " + std::to_string(id) + " is not on the table.");
             break;
         }
 }
@@ -116,8 +117,8 @@ TEST(Practice, SavesAsTheSimulateInputAndLoadsBackTheSameNumbers) {
 
     // coolaaber-cli simulate reads the same file and plays the same shot to the same end.
     nlohmann::json doc = nlohmann::json::parse(saved);
-    doc["strike"] = {{"speed", 3.0}, {"heading_deg", 10.0}, {"side", 0.0},
-                     {"top", 0.2},   {"elevation_deg", 0.0}};
+    doc["strike"] = {
+        {"speed", 3.0}, {"heading_deg", 10.0}, {"side", 0.0}, {"top", 0.2}, {"elevation_deg", 0.0}};
     const cli_test::CliResult r = cli_test::run_cli("simulate", doc.dump());
     ASSERT_EQ(r.status, 0) << r.err;
     Practice played = Practice::from_json(doc.dump());  // a strike in the file is allowed
@@ -144,6 +145,8 @@ TEST(Practice, AFileForSimulateWithAPresetLoads) {
                                       {"id": 3, "pos": [1.0, 0.5]}]})");
     EXPECT_EQ(p.table_spec().length, 1.9812);
     EXPECT_EQ(p.balls().size(), 2u);
+    EXPECT_EQ(p.game(), rules::Game::nine_ball) << "no ball above the 9";
+    EXPECT_EQ(Practice::from_json(eight_ball().to_json()).game(), rules::Game::eight_ball);
 }
 
 TEST(Practice, BadPositionsAreRefusedByTheirField) {
