@@ -274,6 +274,7 @@ void information_bar(const Controller& c, PanelState& st, PanelActions& out) {
 void stroke_controls(const Controller& c, PanelActions& out) {
     const game::Session& s = c.session();
     const bool mine = c.human_to_act();
+    const bool with_rules = !c.practicing();  // practice: no push-out, no calls
     ImGui::Separator();
     ImGui::Text("Tip (spin)");
     if (auto spin = spin_picker(c.aim().side, c.aim().top, mine)) out.spin = spin;
@@ -288,12 +289,12 @@ void stroke_controls(const Controller& c, PanelActions& out) {
     ImGui::SetNextItemWidth(-1.0f);
     if (ImGui::SliderFloat("##elevation", &elevation, 0.0f, 60.0f, "%.0f deg"))
         out.elevation_deg = elevation;
-    if (s.push_out_available() && mine) {
+    if (with_rules && s.push_out_available() && mine) {
         bool push = s.state().shot == rules::Shot::push_out;
         if (ImGui::Checkbox("Push-out", &push)) out.push_out = push;
     }
-    if (s.config().game == rules::Game::eight_ball && s.state().shot != rules::Shot::break_shot &&
-        mine && s.phase() == game::Phase::shoot) {
+    if (with_rules && s.config().game == rules::Game::eight_ball &&
+        s.state().shot != rules::Shot::break_shot && mine && s.phase() == game::Phase::shoot) {
         if (ImGui::Button("Call safety")) out.call_safety = true;
         if (c.call_is_manual()) {
             ImGui::SameLine();
