@@ -30,9 +30,13 @@
 #include "app/picking.hpp"
 #include "app/scene_frame.hpp"
 #include "app/seats.hpp"
+#include "app/shot_sharing.hpp"
 #include "app/status_report.hpp"
 #include "audio/engine.hpp"
+#include "game/atomic_file.hpp"
 #include "game/json_field.hpp"
+#include "game/state_json.hpp"
+#include "game/text_file.hpp"
 #include "render/headless_context.hpp"
 #include "render/image.hpp"
 
@@ -75,6 +79,100 @@ struct Table {
         panel.notice_is_error = setup.notice_is_error;
         saved = setup.settings;
         controller.set_power(setup.settings.power);
+        if (setup.practice) start_practice(setup.settings.game);
+        if (setup.shared_stroke) {
+            controller.play_shared(*setup.shared_stroke);
+            note_link(
+                "Opened a shot link: the shot plays as it was shared; Replay (P) shows it "
+                "again, or play on from where it leaves the balls.",
+                false);
+        }
+    }
+
+    std::string link_note_shown() const {
+        return panel.link_note_serial == controller.shot_serial() ? panel.link_note : "";
+    }
+
+    /// A line about a shot link in the information bar, until the next shot.
+    void note_link(std::string text, bool is_error) {
+        panel.link_note = std::move(text);
+        panel.link_note_is_error = is_error;
+        panel.link_note_serial = controller.shot_serial();
+    }
+
+    /// Copy shot link: the last shot (or the shot as aimed) as link text on the clipboard.
+    void copy_link() {
+        const ShotToShare s =
+            shot_to_share(controller.session(), controller.stroke_of(controller.aim()));
+        if (!s.shot) return note_link(s.why_not, true);
+        if (SDL_SetClipboardText(game::shot_link(*s.shot).c_str()) != 0)
+            return note_link(std::string("The clipboard could not be written: ") + SDL_GetError(),
+                             true);
+        note_link(copied_notice(*s.shot, !controller.session().history().empty()), false);
+    }
+
+    /// Opens a pasted shot link: its position and table, and its stroke played at once. A bad
+    /// link is reported and the game is left as it was.
+    void open_link(const std::string& text) {
+        game::SharedShot shot;
+        try {
+            shot = game::read_shot_link(text);
+        } catch (const game::LoadError& e) {
+            return note_link(
+                std::string("The pasted text is not a shot link this game can open: ") + e.what(),
+                true);
+        }
+        ControllerOptions opts = setup.controller;
+        opts.players = setup.settings.players;
+        opts.seed = fresh_seed();
+        controller.replace(
+            session_of(shot, seat_names(setup.settings.names, opts.players), opts.seed), opts);
+        controller.play_shared(shot.stroke);
+        note_link("Opened the pasted shot link: Replay (P) shows it again, or play on.", false);
+    }
+
+    void start_practice(rules::Game game) {
+        ControllerOptions opts = setup.controller;
+        opts.seed = fresh_seed();
+        controller.start_practice(
+            game::Practice(game, physics::TableSpec{}, physics::Params{}, opts.seed), opts);
+    }
+
+    /// Save position: the practice position as coolaaber-cli simulate's input.
+    void save_position() {
+        try {
+            std::error_code ec;
+            std::filesystem::create_directories(setup.position_path.parent_path(), ec);
+            game::write_file_atomically(setup.position_path, controller.practice()->to_json());
+            note_link("Saved the position to " + setup.position_path.string() +
+                          " (coolaaber-cli simulate reads it).",
+                      false);
+        } catch (const std::exception& e) {
+            note_link(std::string("The position was not saved: ") + e.what(), true);
+        }
+    }
+
+    /// Load position: the position saved last, or why it cannot be read (nothing changes).
+    void load_position() {
+        try {
+            game::Practice p =
+                game::Practice::from_json(game::read_regular_file(setup.position_path));
+            ControllerOptions opts = setup.controller;
+            opts.seed = fresh_seed();
+            controller.start_practice(std::move(p), opts);
+            note_link("Loaded the position from " + setup.position_path.string() + ".", false);
+        } catch (const game::LoadError& e) {
+            note_link(std::string("The position could not be loaded: ") + e.what(), true);
+        }
+    }
+
+    void paste_link() {
+        char* text = SDL_GetClipboardText();
+        const std::string pasted = text ? text : "";
+        SDL_free(text);
+        if (pasted.empty())
+            return note_link("The clipboard is empty: copy a shot link first.", true);
+        open_link(pasted);
     }
 
     render::Camera camera(float aspect) const {
@@ -114,6 +212,10 @@ struct Table {
         if (a.replay) controller.replay();
         if (a.strike) controller.strike();
         if (a.hint) controller.hint();
+        if (a.copy_link) copy_link();
+        if (a.try_again) controller.try_again();
+        if (a.save_position && controller.practicing()) save_position();
+        if (a.load_position) load_position();
         if (a.spin) controller.set_spin(a.spin->first, a.spin->second);
         if (a.elevation_deg) controller.set_elevation(*a.elevation_deg);
         if (a.choice) controller.choose(*a.choice);
@@ -130,6 +232,7 @@ struct Table {
             opts.players = s.players;
             opts.seed = fresh_seed();
             try {
+                if (a.new_game->practice) return start_practice(s.game);
                 controller.replace(game::Session(new_game_config(s, opts.seed)), opts);
             } catch (const std::exception& e) {
                 panel.notice = e.what();
@@ -153,7 +256,10 @@ struct Table {
     }
 
     void save_and_close() {
-        const std::string err = save_on_exit(controller.session(), setup.autosave_path);
+        // Practice is not a game: the game saved before it stays as it was.
+        const std::string err = controller.practicing()
+                                    ? std::string()
+                                    : save_on_exit(controller.session(), setup.autosave_path);
         if (!err.empty())
             std::fprintf(stderr, "coolaaber: the game was not saved: %s\n", err.c_str());
         if (setup.settings_path.empty()) return;
@@ -165,12 +271,28 @@ struct Table {
     }
 };
 
+// What the painter's table is built from.
+std::string table_key(const game::Session& s) {
+    return game::to_json(s.config().table).dump() +
+           fmt::format("{}", s.config().params.ball_radius);
+}
+
+// Where each ball is seen in the table view (the status file's test hook).
+std::map<int, std::array<double, 2>> ball_pixels(const Table& t, int width, int height) {
+    std::map<int, std::array<double, 2>> out;
+    const double R = t.controller.session().config().params.ball_radius;
+    for (const physics::BallState& b : t.controller.balls_now())
+        if (auto px = screen_point(t.last_camera, width, height, b.pos, R)) out[b.id] = *px;
+    return out;
+}
+
 bool key_shift() {
     return (SDL_GetModState() & KMOD_SHIFT) != 0;
 }
 
 // The keyboard at the table (docs/app.md, "Playing").
-void on_key(Table& t, SDL_Window* window, SDL_Keycode key, bool shift) {
+void on_key(Table& t, SDL_Window* window, SDL_Keycode key, Uint16 mod) {
+    const bool shift = (mod & KMOD_SHIFT) != 0;
     switch (key) {
         case SDLK_LEFT:
             t.controller.turn_aim(shift ? 0.05 : 0.5);
@@ -188,7 +310,10 @@ void on_key(Table& t, SDL_Window* window, SDL_Keycode key, bool shift) {
             t.controller.strike();
             break;
         case SDLK_v:
-            t.change_view();
+            if ((mod & KMOD_CTRL) != 0)
+                t.paste_link();
+            else
+                t.change_view();
             break;
         case SDLK_s:
         case SDLK_RETURN:
@@ -281,17 +406,24 @@ int run_window(const AppOptions& options) {
         ImGui_ImplOpenGL3_Init("#version 330 core");
         audio::Engine sound;  // no device: silent, one line on stderr
         sound.set_muted(!t.setup.settings.sound);
-        Painter painter(t.controller.session().table(),
-                        t.controller.session().config().params.ball_radius);
+        std::optional<Painter> painter;
+        std::string painted;  // the table the painter draws (a pasted link may bring another)
+        auto paint_the_session_table = [&] {
+            if (table_key(t.controller.session()) == painted) return;
+            painted = table_key(t.controller.session());
+            painter.emplace(t.controller.session().table(),
+                            t.controller.session().config().params.ball_radius);
+        };
+        paint_the_session_table();
         float dpi = 0.0f;
         if (SDL_GetDisplayDPI(0, nullptr, &dpi, nullptr) != 0) dpi = 0.0f;
         const float ui_scale = dpi_scale(std::getenv("COOLAABER_UI_SCALE"), dpi);
         std::optional<StatusFile> status;
         if (options.status_file) status.emplace(*options.status_file);
 
-        const double R = t.controller.session().config().params.ball_radius;
         auto to_table = [&](double x, double y) {
-            return table_point(t.last_camera, painter.view_width(), painter.height(), x, y, R);
+            const double R = t.controller.session().config().params.ball_radius;
+            return table_point(t.last_camera, painter->view_width(), painter->height(), x, y, R);
         };
         TableInput input(t.controller, t.rig, to_table);
         double mouse_x = 0, mouse_y = 0;
@@ -303,7 +435,7 @@ int run_window(const AppOptions& options) {
         bool drew_moving = false;  // the last frame was drawn for a moving camera (smaller, 1×)
         long frames = 0;
         auto last = std::chrono::steady_clock::now();
-        auto over_panel = [&](double x) { return x >= painter.view_width(); };
+        auto over_panel = [&](double x) { return x >= painter->view_width(); };
 
         while (!t.exit_requested) {
             // ---- Events: wait for one when nothing moves
@@ -354,8 +486,7 @@ int run_window(const AppOptions& options) {
                         // Not while a dialog is open: its buttons answer it, the table waits.
                         if (!ImGui::GetIO().WantTextInput &&
                             !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId))
-                            on_key(t, window, e.key.keysym.sym,
-                                   (e.key.keysym.mod & KMOD_SHIFT) != 0);
+                            on_key(t, window, e.key.keysym.sym, e.key.keysym.mod);
                         break;
                     case SDL_WINDOWEVENT:
                         if (e.window.event == SDL_WINDOWEVENT_SIZE_CHANGED &&
@@ -397,7 +528,8 @@ int run_window(const AppOptions& options) {
             int w = 0, h = 0;
             SDL_GL_GetDrawableSize(window, &w, &h);
             const PanelLayout layout = panel_layout(w, h, ui_scale);
-            painter.resize(w, h, static_cast<int>(layout.width));
+            paint_the_session_table();
+            painter->resize(w, h, static_cast<int>(layout.width));
             set_ui_scale(layout.scale);
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplSDL2_NewFrame();
@@ -418,7 +550,7 @@ int run_window(const AppOptions& options) {
             if (!mouse_down[0] && !mouse_down[1] && !mouse_down[2])
                 t.persist_settings();  // not mid-drag
             const float aspect =
-                static_cast<float>(painter.view_width()) / static_cast<float>(painter.height());
+                static_cast<float>(painter->view_width()) / static_cast<float>(painter->height());
             const render::Camera previous = t.last_camera;
             t.last_camera = t.camera(aspect);
             const bool camera_moving = t.rig.animating() || previous.eye != t.last_camera.eye ||
@@ -427,21 +559,24 @@ int run_window(const AppOptions& options) {
             sound.set_listener(listener_of(t.last_camera));
             const SceneFrame scene =
                 build_scene(t.controller, t.setup.settings.aim_guide, input.dragged_to());
-            painter.draw_table(scene, t.last_camera, camera_moving);
-            painter.show(ImGui::GetDrawData());
+            painter->draw_table(scene, t.last_camera, camera_moving);
+            painter->show(ImGui::GetDrawData());
             SDL_GL_SwapWindow(window);
             ++frames;
             if (status)
-                status->write(status_json(t.controller, t.setup.settings, t.rig.mode(),
-                                          {t.panel.widgets,
-                                           frames,
-                                           scene.cue.has_value(),
-                                           scene.show_aim,
-                                           scene.ball_in_hand.has_value(),
-                                           static_cast<int>(scene.aim.marks.size()),
-                                           scene.show_aim && scene.aim.illegal,
-                                           {w, h},
-                                           static_cast<int>(layout.width)}));
+                status->write(
+                    status_json(t.controller, t.setup.settings, t.rig.mode(),
+                                {t.panel.widgets,
+                                 frames,
+                                 scene.cue.has_value(),
+                                 scene.show_aim,
+                                 scene.ball_in_hand.has_value(),
+                                 static_cast<int>(scene.aim.marks.size()),
+                                 scene.show_aim && scene.aim.illegal,
+                                 {w, h},
+                                 static_cast<int>(layout.width),
+                                 t.link_note_shown(),
+                                 ball_pixels(t, painter->view_width(), painter->height())}));
         }
         t.save_and_close();
         ImGui_ImplOpenGL3_Shutdown();

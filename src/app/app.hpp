@@ -18,6 +18,8 @@ struct AppOptions {
     bool fullscreen = false;
     std::optional<rules::Game> game;            ///< --game: a new game of this kind
     std::optional<std::filesystem::path> load;  ///< --load FILE: a saved game
+    std::optional<std::string> shot;            ///< --shot LINK: a shared shot, played at once
+    bool practice = false;  ///< --practice: one player at the game's rack, no rules
     std::optional<ViewMode> view;
     std::optional<std::filesystem::path> screenshot;  ///< render the first frame to a PNG, exit
     // Test hooks and extras

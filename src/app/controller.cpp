@@ -65,6 +65,7 @@ Controller::~Controller() {
 
 void Controller::replace(game::Session session, ControllerOptions options) {
     stop_thinking();
+    practice_.reset();
     session_ = std::move(session);
     options_ = std::move(options);
     for (std::size_t i = 0; i < 2; ++i)
@@ -99,6 +100,17 @@ std::vector<physics::BallState> Controller::balls_now() const {
     return session_.balls();
 }
 
+void Controller::play_shared(const physics::Stroke& stroke) {
+    stop_thinking();  // the shot is the link's, whoever's seat it is
+    computer_decision_.reset();
+    aim_.heading_deg = stroke.heading_deg;
+    aim_.power = power_of_speed(stroke.speed);
+    aim_.side = stroke.side;
+    aim_.top = stroke.top;
+    aim_.elevation_deg = stroke.elevation_deg;
+    play(stroke);
+}
+
 bool Controller::busy() const {
     return playback_.moving() || thinking_.valid() || computer_decision_.has_value();
 }
@@ -115,7 +127,7 @@ const AimPreview* Controller::preview() const {
 }
 
 rules::Call Controller::call() const {
-    if (!calls_count(session_)) return rules::Call::nothing();
+    if (practice_ || !calls_count(session_)) return rules::Call::nothing();
     if (computer_decision_) return computer_decision_->call;
     if (manual_call_) return *manual_call_;
     if (preview_ && preview_->first_ball && preview_->pocket && aim_foul_.empty()) {
@@ -206,6 +218,7 @@ void Controller::refresh_preview() {
     preview_ = preview_aim(session_.table(), session_.config().params, balls, stroke_of(aim_));
     // The rules' own verdict on the shot as aimed; only what the player can see coming is
     // said (where the cue ball meets its first ball), not what the exact simulation foresees.
+    if (practice_) return;  // no rules, no fouls
     const rules::Verdict v = rules::judge(session_.ruleset(), session_.state(), preview_->events);
     if (v.has(rules::Foul::bad_play_from_kitchen) && preview_->first_ball)
         aim_foul_ = fmt::format(
@@ -217,6 +230,7 @@ void Controller::refresh_preview() {
 // ---- The stroke and its playback
 
 void Controller::play(const physics::Stroke& stroke) {
+    if (practice_) return play_practice(stroke);
     std::vector<std::string> info_before = info_lines(session_, call());
     const game::ShotRecord* record = nullptr;
     try {
@@ -242,6 +256,10 @@ void Controller::play(const physics::Stroke& stroke) {
 }
 
 std::vector<std::string> Controller::info() const {
+    if (practice_)
+        return {"Practice: drag any ball with the left button",
+                "Try again puts back the position "
+                "before the last shot"};
     return settled_ && !replaying() ? info_lines(session_, call()) : info_at_strike_;
 }
 
@@ -258,6 +276,7 @@ std::vector<int> Controller::tray() const {
 
 void Controller::finish_shot() {
     settled_ = true;
+    if (practice_) return finish_practice_shot();
     if (!session_.history().empty()) last_words_ = shot_words(session_, session_.history().back());
     const bool all_computers = computers_[0] && computers_[1];
     const game::Phase ph = session_.phase();
@@ -508,6 +527,13 @@ void Controller::replay() {
 }
 
 void Controller::restart() {
+    if (practice_) {  // a new rack to practise on
+        const game::Session& s = session_;
+        start_practice(game::Practice(s.config().game, s.config().table, s.config().params,
+                                      s.config().seed + 1),
+                       options_);
+        return;
+    }
     stop_thinking();
     session_.restart();
     playback_.clear();

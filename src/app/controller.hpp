@@ -19,6 +19,7 @@
 #include "app/ball_orientations.hpp"
 #include "app/playback.hpp"
 #include "game/player.hpp"
+#include "game/practice.hpp"
 #include "game/session.hpp"
 #include "physics/rack.hpp"
 
@@ -141,8 +142,26 @@ class Controller {
     void restart();  ///< a new rack (the next game of the session)
     /// Replaces the session (a New Game with other rules or names, or a loaded game).
     void replace(game::Session session, ControllerOptions options);
+    /// Plays a shared shot's stroke at once, whoever's seat it is, on a session just set up at
+    /// the shot's position (app/shot_sharing.hpp), as any shot: Replay shows it again, and play
+    /// goes on from where it left the balls.
+    void play_shared(const physics::Stroke& stroke);
+
+    // ---- Practice (docs/app.md, "Practice"): one player, no rules; session() mirrors the
+    // practice position (the state's positions, A always to shoot) for drawing and aiming.
+    /// Replaces the game by practice at `practice`'s position (both seats human).
+    void start_practice(game::Practice practice, ControllerOptions options);
+    bool practicing() const { return practice_.has_value(); }
+    const game::Practice* practice() const { return practice_ ? &*practice_ : nullptr; }
+    /// Practice: moves ball `id` to `pos`; false (and refusal()) where it may not lie.
+    bool move_ball(int id, physics::Vec2 pos);
+    /// Practice: the position before the last shot again.
+    void try_again();
 
   private:
+    void play_practice(const physics::Stroke& stroke);
+    void finish_practice_shot();
+    void mirror_practice();
     void begin_turn();
     void refresh_preview();
     void play(const physics::Stroke& stroke);
@@ -181,6 +200,7 @@ class Controller {
     std::string refusal_;
     std::string aim_foul_;
     int shot_serial_ = 0;
+    std::optional<game::Practice> practice_;
 };
 
 }  // namespace app

@@ -5,6 +5,7 @@
 #include <chrono>
 
 #include "app/seats.hpp"
+#include "app/shot_sharing.hpp"
 #include "game/json_field.hpp"
 
 namespace app {
@@ -26,6 +27,8 @@ GameSetup set_up_game(const AppOptions& o) {
     GameSetup g;
     g.settings_path = config_folder() / "settings.json";
     g.autosave_path = data_folder() / "saved-game.json";
+    g.position_path = data_folder() / "practice-position.json";
+    g.practice = o.practice;
     LoadedSettings loaded = load_settings(g.settings_path);
     g.settings = loaded.settings;
     if (loaded.message) {
@@ -48,6 +51,12 @@ GameSetup set_up_game(const AppOptions& o) {
     g.controller.seed = seed;
     g.controller.playback_speed = o.playback_speed;
 
+    if (o.shot) {
+        const game::SharedShot shot = game::read_shot_link(*o.shot);  // LoadError to the caller
+        g.session = session_of(shot, seat_names(s.names, s.players), seed);
+        g.shared_stroke = shot.stroke;
+        return g;
+    }
     if (o.load) {
         g.session = game::Session::load_file(*o.load);  // a bad file: LoadError to the caller
         return g;

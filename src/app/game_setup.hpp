@@ -21,6 +21,10 @@ struct GameSetup {
     std::filesystem::path autosave_path;
     std::optional<game::Session> session;
     ControllerOptions controller;
+    /// A shared shot's stroke (--shot), played at once on `session`, set at its position.
+    std::optional<physics::Stroke> shared_stroke;
+    bool practice = false;                ///< --practice: start practising at the game's rack
+    std::filesystem::path position_path;  ///< where Save position writes (practice)
     std::string notice;  ///< shown in the panel (a settings or saved game kept aside, a resume)
     bool notice_is_error = false;  ///< a file was bad (else: news, e.g. the game was resumed)
 };
@@ -28,7 +32,8 @@ struct GameSetup {
 /// A new session's configuration from the settings (names, game, house rules) and a seed.
 game::Config new_game_config(const Settings& settings, std::uint64_t seed);
 
-/// Throws game::LoadError for a bad --load file (the caller reports it and exits 2).
+/// Throws game::LoadError for a bad --load file or --shot link (the caller reports it and
+/// exits 2).
 GameSetup set_up_game(const AppOptions& options);
 
 /// A seed from the clock (a new rack each run), unless one was given.

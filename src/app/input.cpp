@@ -20,20 +20,28 @@ void TableInput::press(MouseButton b, double x, double y) {
         case MouseButton::middle:
             drag_ = Drag::orbit;
             break;
-        case MouseButton::left: {
-            drag_ = Drag::aim;
-            if (c_.human_to_act() && c_.session().ball_in_hand() != rules::BallInHand::none) {
-                const auto cue = c_.session().state().positions.find(0);
-                const std::optional<physics::Vec2> p = to_table_(x, y);
-                const double R = c_.session().config().params.ball_radius;
-                if (p && cue != c_.session().state().positions.end() &&
-                    physics::norm(*p - cue->second) < 2.0 * R) {
-                    drag_ = Drag::cue_ball;
-                    dragged_to_ = p;
-                }
-            }
+        case MouseButton::left:
+            press_left(x, y);
             break;
-        }
+    }
+}
+
+// Aim, or drag the ball under the mouse: the cue ball in hand, or in practice any ball.
+void TableInput::press_left(double x, double y) {
+    drag_ = Drag::aim;
+    if (!c_.human_to_act()) return;
+    const bool in_hand = c_.session().ball_in_hand() != rules::BallInHand::none;
+    if (!in_hand && !c_.practicing()) return;
+    const std::optional<physics::Vec2> p = to_table_(x, y);
+    if (!p) return;
+    const double R = c_.session().config().params.ball_radius;
+    for (const auto& [id, pos] : c_.session().state().positions) {
+        if ((id != 0 && !c_.practicing()) || physics::norm(*p - pos) >= (id == 0 ? 2.0 : 1.0) * R)
+            continue;
+        drag_ = c_.practicing() ? Drag::ball : Drag::cue_ball;
+        ball_ = id;
+        dragged_to_ = p;
+        return;
     }
 }
 
@@ -54,6 +62,9 @@ void TableInput::motion(double x, double y, bool shift) {
             dragged_to_ = to_table_(x, y);
             if (dragged_to_) c_.move_cue_ball(*dragged_to_);
             break;
+        case Drag::ball:
+            if (const std::optional<physics::Vec2> p = to_table_(x, y)) c_.move_ball(ball_, *p);
+            break;
         case Drag::orbit:
             rig_.orbit(static_cast<float>(dx), static_cast<float>(dy));
             break;
@@ -62,9 +73,10 @@ void TableInput::motion(double x, double y, bool shift) {
 
 void TableInput::release(MouseButton b, double x, double y) {
     const Drag d = drag_;
-    const bool matches = (b == MouseButton::right && d == Drag::aim_and_strike) ||
-                         (b == MouseButton::middle && d == Drag::orbit) ||
-                         (b == MouseButton::left && (d == Drag::aim || d == Drag::cue_ball));
+    const bool matches =
+        (b == MouseButton::right && d == Drag::aim_and_strike) ||
+        (b == MouseButton::middle && d == Drag::orbit) ||
+        (b == MouseButton::left && (d == Drag::aim || d == Drag::cue_ball || d == Drag::ball));
     if (!matches) return;
     drag_ = Drag::none;
     if (d == Drag::aim_and_strike) {

@@ -29,7 +29,8 @@ class TableInput {
         : c_(controller), rig_(rig), to_table_(std::move(to_table)) {}
 
     /// Right button: aim while held, strike on release. Left: aim without striking, or drag
-    /// the cue ball in hand when pressed on it, or a click (no motion) to call a ball/pocket.
+    /// the cue ball in hand when pressed on it (in practice: any ball), or a click (no motion)
+    /// to call a ball/pocket.
     /// Middle: orbit the free camera.
     void press(MouseButton b, double x, double y);
     void motion(double x, double y, bool shift);
@@ -46,13 +47,15 @@ class TableInput {
     AimSensitivity sensitivity;
 
   private:
-    enum class Drag { none, aim_and_strike, aim, cue_ball, orbit };
+    enum class Drag { none, aim_and_strike, aim, cue_ball, ball, orbit };
+    void press_left(double x, double y);
     Controller& c_;
     CameraRig& rig_;
     ToTable to_table_;
     Drag drag_ = Drag::none;
     double start_x_ = 0, start_y_ = 0, last_x_ = 0, last_y_ = 0;
     bool moved_ = false;
+    int ball_ = 0;  ///< the ball dragged in practice
     std::optional<physics::Vec2> dragged_to_;
 };
 

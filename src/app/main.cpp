@@ -1,5 +1,6 @@
 // coolaaber: the game. Options (docs/app.md):
-//   --size WxH  --fullscreen  --game 8ball|9ball  --load FILE  --view overhead|cueball
+//   --size WxH  --fullscreen  --game 8ball|9ball  --load FILE  --shot LINK  --practice
+//   --view overhead|cueball
 //   --screenshot FILE (render the first frame offscreen, write a PNG, exit)
 //   --players human,ai:3  --seed N  --noise X  --playback-speed X  --status-file FILE (tests)
 #include <CLI/CLI.hpp>
@@ -17,7 +18,7 @@ namespace {
 struct CommandLine {
     app::AppOptions options;
     std::string size, game, view, players;
-    std::string load, screenshot, status;
+    std::string load, shot, screenshot, status;
     std::uint64_t seed = 0;
     CLI::Option* seed_given = nullptr;
     double noise = -1.0;
@@ -34,7 +35,12 @@ void add_options(CLI::App& cli, CommandLine& line) {
     cli.add_flag("--fullscreen", o.fullscreen, "start in fullscreen (F11 toggles)");
     cli.add_option("--game", line.game, "start a new game: 8ball or 9ball")
         ->check(CLI::IsMember({"8ball", "9ball"}));
-    cli.add_option("--load", line.load, "resume a saved game from FILE");
+    CLI::Option* load = cli.add_option("--load", line.load, "resume a saved game from FILE");
+    cli.add_option("--shot", line.shot,
+                   "open a shot link (shot=1.… or an address ending in #shot=1.…) and play it")
+        ->excludes(load);
+    cli.add_flag("--practice", o.practice,
+                 "practise alone at the game's rack (8ball or 9ball, see --game), no rules");
     cli.add_option("--view", line.view, "overhead or cueball")
         ->check(CLI::IsMember({"overhead", "cueball"}));
     cli.add_option("--screenshot", line.screenshot,
@@ -83,6 +89,7 @@ app::AppOptions read_options(const CommandLine& line) {
     if (!line.view.empty())
         o.view = line.view == "overhead" ? app::ViewMode::overhead : app::ViewMode::cue_ball;
     if (!line.load.empty()) o.load = line.load;
+    if (!line.shot.empty()) o.shot = line.shot;
     if (!line.screenshot.empty()) o.screenshot = line.screenshot;
     if (!line.status.empty()) o.status_file = line.status;
     if (*line.seed_given) o.seed = line.seed;

@@ -155,11 +155,15 @@ void new_game_dialog(PanelState& st, PanelActions& out) {
     ImGui::SameLine();
     ImGui::RadioButton("9-ball", &game, 1);
     d.game = game == 0 ? rules::Game::eight_ball : rules::Game::nine_ball;
+    ImGui::Checkbox("Practice (one player, no rules)", &d.practice);
+    remember(st, "Practice (one player, no rules)");
     std::vector<std::string> kinds{"human", "random"};
     for (int level = 1; level <= 5; ++level) kinds.push_back(fmt::format("ai:{}", level));
-    for (std::size_t seat = 0; seat < 2; ++seat) seat_row(d, seat, kinds);
+    if (!d.practice)
+        for (std::size_t seat = 0; seat < 2; ++seat) seat_row(d, seat, kinds);
     if (auto g = aim_guide_combo(st, d.aim_guide)) d.aim_guide = *g;
-    if (d.game == rules::Game::eight_ball && ImGui::CollapsingHeader("House rules (8-ball)"))
+    if (!d.practice && d.game == rules::Game::eight_ball &&
+        ImGui::CollapsingHeader("House rules (8-ball)"))
         house_rules_editor(d.house_rules);
     ImGui::Separator();
     const bool start = ImGui::Button("Start", ImVec2(px(120), 0));
@@ -189,12 +193,14 @@ void replay_label(const Controller& c) {
 }
 
 // The title line and any notice (e.g. a saved game set aside), dismissed with OK.
-void header(const game::Session& s, PanelState& st) {
+void header(const Controller& c, PanelState& st) {
+    const game::Session& s = c.session();
     ImGui::TextColored(accent, "COOLAABER");
     ImGui::SameLine();
-    ImGui::TextDisabled("%s  game %d",
-                        s.config().game == rules::Game::eight_ball ? "8-ball" : "9-ball",
-                        s.game_number() + 1);
+    const std::string which =
+        c.practicing() ? "practice" : fmt::format("game {}", s.game_number() + 1);
+    ImGui::TextDisabled("%s  %s", s.config().game == rules::Game::eight_ball ? "8-ball" : "9-ball",
+                        which.c_str());
     if (!st.notice.empty()) {
         ImGui::PushTextWrapPos(0.0f);
         if (st.notice_is_error)
@@ -244,7 +250,21 @@ void information_bar(const Controller& c, PanelState& st, PanelActions& out) {
     if (!c.last_shot_words().empty()) ImGui::TextDisabled("%s", c.last_shot_words().c_str());
     if (!c.aim_foul().empty()) ImGui::TextColored(warning, "%s", c.aim_foul().c_str());
     if (!c.refusal().empty()) ImGui::TextColored(warning, "%s", c.refusal().c_str());
+    if (!st.link_note.empty() && st.link_note_serial == c.shot_serial()) {
+        if (st.link_note_is_error)
+            ImGui::TextColored(warning, "%s", st.link_note.c_str());
+        else
+            ImGui::TextUnformatted(st.link_note.c_str());
+    }
     ImGui::PopTextWrapPos();
+    if (c.practicing() && !c.busy()) {
+        ImGui::BeginDisabled(!c.practice()->can_try_again());
+        if (full_button(st, "Try again")) out.try_again = true;
+        ImGui::EndDisabled();
+        const auto [save, load] = button_pair(st, "Save position", "Load position");
+        out.save_position = save;
+        out.load_position = load;
+    }
     if (std::optional<rules::Choice> choice = c.session().choice(); choice && c.human_to_act())
         for (rules::ChoiceOption o : choice->options)
             if (full_button(st, choice_words(o).c_str())) out.choice = o;
@@ -254,6 +274,7 @@ void information_bar(const Controller& c, PanelState& st, PanelActions& out) {
 void stroke_controls(const Controller& c, PanelActions& out) {
     const game::Session& s = c.session();
     const bool mine = c.human_to_act();
+    const bool with_rules = !c.practicing();  // practice: no push-out, no calls
     ImGui::Separator();
     ImGui::Text("Tip (spin)");
     if (auto spin = spin_picker(c.aim().side, c.aim().top, mine)) out.spin = spin;
@@ -268,12 +289,12 @@ void stroke_controls(const Controller& c, PanelActions& out) {
     ImGui::SetNextItemWidth(-1.0f);
     if (ImGui::SliderFloat("##elevation", &elevation, 0.0f, 60.0f, "%.0f deg"))
         out.elevation_deg = elevation;
-    if (s.push_out_available() && mine) {
+    if (with_rules && s.push_out_available() && mine) {
         bool push = s.state().shot == rules::Shot::push_out;
         if (ImGui::Checkbox("Push-out", &push)) out.push_out = push;
     }
-    if (s.config().game == rules::Game::eight_ball && s.state().shot != rules::Shot::break_shot &&
-        mine && s.phase() == game::Phase::shoot) {
+    if (with_rules && s.config().game == rules::Game::eight_ball &&
+        s.state().shot != rules::Shot::break_shot && mine && s.phase() == game::Phase::shoot) {
         if (ImGui::Button("Call safety")) out.call_safety = true;
         if (c.call_is_manual()) {
             ImGui::SameLine();
@@ -302,13 +323,19 @@ void play_buttons(const Controller& c, const Settings& settings, PanelState& st,
     } else {
         ImGui::Dummy(ImVec2(0.0f, ImGui::GetFrameHeight()));
     }
+    const float half = (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x) / 2;
     if (c.moving()) {
-        if (full_button(st, "Skip")) out.skip = true;
+        if (ImGui::Button("Skip", ImVec2(half, 0.0f))) out.skip = true;
+        remember(st, "Skip");
     } else if (c.playback().has_shot() && !c.busy()) {
-        if (full_button(st, "Replay")) out.replay = true;
+        if (ImGui::Button("Replay", ImVec2(half, 0.0f))) out.replay = true;
+        remember(st, "Replay");
     } else {
-        ImGui::Dummy(ImVec2(0.0f, ImGui::GetFrameHeight()));
+        ImGui::Dummy(ImVec2(half, ImGui::GetFrameHeight()));
     }
+    ImGui::SameLine();
+    if (ImGui::Button("Copy shot link", ImVec2(half, 0.0f))) out.copy_link = true;
+    remember(st, "Copy shot link");
     const auto [new_game, controls] = button_pair(st, "New Game...", "Controls");
     if (new_game) open_new_game(st, settings);
     if (controls) st.controls_open = true;
@@ -325,8 +352,8 @@ void controls_dialog(PanelState& st) {
          {"Right-drag: aim; release: strike", "Left-drag: aim (or move the ball in hand)",
           "Shift while aiming: finer", "Click a ball, then a pocket: call",
           "Arrows: aim (Shift finer) and power", "Space: strike", "S or Enter: skip the shot",
-          "P: replay it", "H: hint", "G: aim guide level", "V: change view, O: free view",
-          "Wheel: zoom", "R: restart, Esc: menu, F11: fullscreen"})
+          "P: replay it", "H: hint", "Ctrl+V: open a shot link", "G: aim guide level",
+          "V: change view, O: free view", "Wheel: zoom", "R: restart, Esc: menu, F11: fullscreen"})
         ImGui::TextUnformatted(line);
     const bool close = ImGui::Button("Close", ImVec2(-1.0f, 0.0f));
     remember(st, "Close");
@@ -387,7 +414,7 @@ PanelActions draw_panel(const Controller& c, const Settings& settings, PanelStat
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                      ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar |
                      ImGuiWindowFlags_NoScrollWithMouse);
-    header(c.session(), st);
+    header(c, st);
     original_controls(c, settings, st, out);
     ImGui::BeginChild("##middle", ImVec2(0.0f, -footer_height()));
     information_bar(c, st, out);

@@ -22,6 +22,7 @@ struct NewGame {
     std::array<std::string, 2> players{"human", "human"};
     rules::Options house_rules;
     AimGuide aim_guide = AimGuide::lines;
+    bool practice = false;  ///< one player at this game's table and balls, no rules
 };
 
 struct PanelActions {
@@ -35,6 +36,10 @@ struct PanelActions {
     bool replay = false;
     bool strike = false;
     bool hint = false;
+    bool copy_link = false;  ///< Copy shot link
+    bool try_again = false;  ///< practice: the position before the last shot
+    bool save_position = false;
+    bool load_position = false;
     std::optional<std::pair<double, double>> spin;  ///< side, top (unit: R)
     std::optional<double> elevation_deg;
     std::optional<rules::ChoiceOption> choice;
@@ -53,6 +58,11 @@ struct PanelState {
     NewGame draft;
     std::string notice;            ///< a message shown once at the top (e.g. a bad settings file)
     bool notice_is_error = false;  ///< drawn as a warning (else as news)
+    /// What a shot link copied or pasted did, in the information bar until the next shot
+    /// (the controller's shot_serial() other than `link_note_serial`).
+    std::string link_note;
+    bool link_note_is_error = false;
+    int link_note_serial = 0;
     /// Where each labelled widget was drawn last frame (unit: px, window frame: x0, y0, x1, y1),
     /// for the status file that end-to-end tests click by.
     std::map<std::string, std::array<float, 4>> widgets;

@@ -24,4 +24,16 @@ std::optional<physics::Vec2> table_point(const render::Camera& camera, int width
     return physics::Vec2{p.x, p.y};
 }
 
+std::optional<std::array<double, 2>> screen_point(const render::Camera& camera, int width,
+                                                  int height, physics::Vec2 p, double z) {
+    if (width <= 0 || height <= 0) return std::nullopt;
+    const float aspect = static_cast<float>(width) / static_cast<float>(height);
+    const glm::vec4 clip =
+        camera.projection(aspect) * camera.view() *
+        glm::vec4(static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(z), 1.0f);
+    if (clip.w <= 0.0f) return std::nullopt;
+    return std::array<double, 2>{(clip.x / clip.w + 1.0) * width / 2.0,
+                                 (1.0 - clip.y / clip.w) * height / 2.0};
+}
+
 }  // namespace app

@@ -80,6 +80,10 @@ std::string status_json(const Controller& c, const Settings& s, CameraMode view,
                         ? nlohmann::ordered_json::array({cue->second.x, cue->second.y})
                         : nlohmann::ordered_json(nullptr);
     j["balls_on_table"] = session.state().on_table.size();
+    nlohmann::ordered_json positions = nlohmann::ordered_json::object();
+    for (const auto& [id, pos] : session.state().positions)
+        positions[std::to_string(id)] = {pos.x, pos.y};
+    j["positions"] = std::move(positions);
     j["aim_guide_level"] = aim_guide_name(s.aim_guide);
     j["aim_foul"] = c.aim_foul();
     const rules::Call call = c.call();
@@ -91,6 +95,11 @@ std::string status_json(const Controller& c, const Settings& s, CameraMode view,
     j["frames"] = frame.frames;
     j["window"] = frame.window;
     j["panel_width"] = frame.panel_width;
+    j["link_note"] = frame.link_note;
+    nlohmann::ordered_json px = nlohmann::ordered_json::object();
+    for (const auto& [id, at] : frame.ball_px) px[std::to_string(id)] = at;
+    j["ball_px"] = std::move(px);
+    j["practice"] = c.practicing();
     j["drawn"] = {{"cue", frame.cue},
                   {"aim_guide", frame.aim_guide},
                   {"ball_in_hand", frame.ball_in_hand},

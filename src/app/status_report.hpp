@@ -15,8 +15,9 @@ namespace app {
 
 /// {"phase", "to_act", "moving", "busy", "view", "sound", "power", "shots", "game_number",
 ///  "info": [lines], "last_shot", "refusal", "winner", "heading_deg", "cue_ball", "balls_on_table",
-///  "aim_guide_level", "aim_foul", "call": {"ball", "pocket"} or null, "guide_end",
-///  "widgets", "frames", "drawn"}
+///  "positions": {"id": [x, y]} (exact), "aim_guide_level", "aim_foul", "call": {"ball",
+///  "pocket"} or null, "guide_end", "widgets", "frames", "drawn", "link_note", "ball_px": {"id":
+///  [x, y]}, "practice"}
 /// What the last frame showed, beside the controller's state.
 struct FrameFacts {
     std::map<std::string, std::array<float, 4>> widgets;  ///< PanelState::widgets
@@ -28,6 +29,8 @@ struct FrameFacts {
     bool aim_illegal = false;         ///< the guide was drawn red (a foul as aimed)
     std::array<int, 2> window{0, 0};  ///< the window's size (unit: px)
     int panel_width = 0;              ///< (unit: px)
+    std::string link_note;            ///< the shot link line in the information bar, if shown
+    std::map<int, std::array<double, 2>> ball_px;  ///< where each ball is seen (unit: px)
 };
 
 std::string status_json(const Controller& c, const Settings& s, CameraMode view,

@@ -80,6 +80,12 @@ Session::Session(Config config) : Session(std::move(config), Restored{}) {
     rack(rules::initial_state(config_.game, breaker_of_game(0)));
 }
 
+Session Session::at_position(Config config, rules::GameState state) {
+    Session s(std::move(config), Restored{});
+    s.state_ = std::move(state);
+    return s;
+}
+
 rules::Player Session::breaker_of_game(int n) const {
     return n % 2 == 0 ? config_.first_breaker : rules::other(config_.first_breaker);
 }

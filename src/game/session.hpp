@@ -76,6 +76,10 @@ class Session {
     /// A new session: game 0 racked, the first breaker to place the cue ball in the kitchen.
     /// Throws std::invalid_argument for an invalid table or parameters.
     explicit Session(Config config);
+    /// A session whose first game goes on from `state` (a shared shot's position, read and
+    /// checked by read_shot_link): no history, nothing pocketed listed, the state's shooter to
+    /// act. Throws std::invalid_argument for an invalid table or parameters.
+    static Session at_position(Config config, rules::GameState state);
 
     // ---- What the table looks like
     const Config& config() const { return config_; }

@@ -12,6 +12,7 @@ information bar, whose turn, whether the balls move, where the panel's buttons a
   end_to_end.py hinted COOLAABER WORKDIR     a human plays a whole game against the AI: Hint,
       then a right click to strike, every turn (needs a build with src/ai)
 """
+import base64
 import json
 import os
 import shutil
@@ -399,9 +400,150 @@ def resize(exe, work):
         g.close()
 
 
+def shot_link_text(save, stroke):
+    """A shot link (docs/game.md, "Shot links") of a saved game's position and a stroke, made
+    here from the format's description so that the game's reading is checked against it."""
+    c = save["config"]
+    shot = {"game": c["game"], "options": c["options"], "table": c["table"], "params": c["params"],
+            "state": save["state"], "stroke": stroke}
+    text = json.dumps(shot, separators=(",", ":")).encode()
+    h = 2166136261
+    for b in text:
+        h = ((h ^ b) * 16777619) & 0xFFFFFFFF
+    return f"shot=1.{h:08x}." + base64.urlsafe_b64encode(text).decode().rstrip("=")
+
+
+def simulated_rest(save, stroke):
+    """Where `coolaaber-cli simulate` leaves the balls of `save` after `stroke`: {id: [x, y]}."""
+    c = save["config"]
+    doc = {"table": c["table"], "params": {k: v for k, v in c["params"].items() if v is not None},
+           "balls": [{"id": int(b), "pos": p} for b, p in save["state"]["positions"].items()],
+           "strike": stroke}
+    out = subprocess.run([os.environ["COOLAABER_CLI"], "simulate"], input=json.dumps(doc), capture_output=True,
+                         text=True, timeout=60, check=True)
+    return {str(b["id"]): b["pos"] for b in json.loads(out.stdout)["final"] if b["pos"] is not None}
+
+
+def hold_clipboard(text):
+    """A helper process that owns the X clipboard with `text` for 30 s (the game pastes from it)."""
+    code = ("import sys, tkinter; r = tkinter.Tk(); r.withdraw(); r.clipboard_clear(); "
+            "r.clipboard_append(sys.argv[1]); r.update(); r.after(30000, r.destroy); r.mainloop()")
+    p = subprocess.Popen([sys.executable, "-c", code, text])
+    time.sleep(1.0)
+    return p
+
+
+def shared_shot(exe, work):
+    """--shot LINK sets up the link's position and plays its stroke to where the engine puts the
+    balls; Replay shows it again; Copy shot link and Ctrl+V open it again; a bad link is refused
+    with one line (exit 2 on the command line, the information bar for a paste)."""
+    save = saved_game({0: (0.7, 0.5), 1: (1.6, 0.55), 8: (2.0, 0.9), 12: (0.4, 1.0)})
+    stroke = {"speed": 2.2, "heading_deg": 3.0, "side": 0.2, "top": -0.1, "elevation_deg": 0.0}
+    link, expected = shot_link_text(save, stroke), simulated_rest(save, stroke)
+    check(expected != {k: v for k, v in save["state"]["positions"].items()}, "the stroke moves the balls")
+    g = Game(exe, work, "--shot", link)
+    try:
+        s = g.wait(lambda s: s["shots"] == 1 and not s["moving"] and not s["busy"], 60, "the shared shot")
+        check(s["positions"] == expected, f"the balls rest where simulate puts them: {s['positions']}")
+        check("Opened a shot link" in s["link_note"], f"the information bar says so: {s['link_note']!r}")
+        g.screenshot("shot-played.png")
+        key(g, "p")
+        g.wait(lambda s: s["replaying"], 10, "the replay")
+        time.sleep(0.4)
+        g.screenshot("shot-replay.png")
+        s = g.wait(lambda s: not s["moving"] and not s["replaying"], 60, "the replay's end")
+        check(s["positions"] == expected and s["shots"] == 1, "the replay changes nothing")
+        g.click_widget("Copy shot link")
+        s = g.wait(lambda s: "Copied the link of the last shot" in s["link_note"], 10, "the copy")
+        g.screenshot("shot-copied.png")
+        key(g, "ctrl+v")
+        s = g.wait(lambda s: "Opened the pasted shot link" in s["link_note"], 20, "the paste")
+        s = g.wait(lambda s: not s["moving"] and not s["busy"], 60, "the pasted shot")
+        check(s["positions"] == expected and s["shots"] == 1, "the copied link of the shot is that shot")
+        holder = hold_clipboard(link[:-6])
+        try:
+            key(g, "ctrl+v")
+            s = g.wait(lambda s: "not a shot link this game can open" in s["link_note"], 20, "the bad paste")
+        finally:
+            holder.kill()
+        check("checksum" in s["link_note"] and s["positions"] == expected and s["shots"] == 1,
+              f"a bad paste is refused and the game is untouched: {s['link_note']!r}")
+        g.screenshot("shot-bad-paste.png")
+    finally:
+        g.close()
+    p = subprocess.run([exe, "--shot", link[:-6]], capture_output=True, text=True, timeout=20,
+                       env=dict(os.environ, XDG_CONFIG_HOME=os.path.join(work, "config"),
+                                XDG_DATA_HOME=os.path.join(work, "data")))
+    lines = p.stderr.splitlines()
+    check(p.returncode == 2 and len(lines) == 1 and lines[0].startswith("error: link: ") and "checksum" in lines[0],
+          f"a cut link on the command line: exit 2, one line ({p.returncode}, {p.stderr.strip()!r})")
+
+
+def drag(g, frm, to, steps=8):
+    g.move(*frm)
+    time.sleep(0.15)
+    g.xdo("mousedown", "--window", g.window, "1")
+    for i in range(1, steps + 1):
+        g.move(frm[0] + (to[0] - frm[0]) * i / steps, frm[1] + (to[1] - frm[1]) * i / steps)
+        time.sleep(0.05)
+    g.xdo("mouseup", "--window", g.window, "1")
+    time.sleep(0.3)
+
+
+def practice(exe, work):
+    """--practice: a ball dragged to a free spot moves there, onto another ball it stays put with
+    the reason; a shot plays; Try again puts back the position exactly; Save position writes what
+    coolaaber-cli simulate reads; Load position brings it back."""
+    g = Game(exe, work, "--practice", "--game", "9ball", "--view", "overhead", "--seed", "4")
+    try:
+        s = g.wait(lambda s: s["practice"] and not s["busy"], 30, "practice")
+        check(s["balls_on_table"] == 9 and s["info"][0].startswith("Practice"), f"a 9-ball rack to practise on: {s['info']}")
+        g.screenshot("practice-start.png")
+        five = s["ball_px"]["5"]
+        drag(g, five, (five[0] - 200, five[1] + 60))
+        s = g.wait(lambda s: s["positions"]["5"] != g.status["positions"]["5"], 10, "the 5 moved")
+        moved = s["ball_px"]["5"]
+        check(abs(moved[0] - (five[0] - 200)) < 3 and abs(moved[1] - (five[1] + 60)) < 3,
+              f"the 5 lies where it was dropped ({moved} for {(five[0] - 200, five[1] + 60)})")
+        cue = s["ball_px"]["0"]
+        drag(g, moved, cue)
+        s = g.wait(lambda s: "on top of the cue ball" in s["refusal"], 10, "the refusal")
+        check(s["positions"]["5"] != s["positions"]["0"], f"the 5 stays off the cue ball: {s['refusal']!r}")
+        g.screenshot("practice-dragged.png")
+        before = s["positions"]
+        key(g, "space")
+        g.wait(lambda s: s["moving"], 10, "the shot")
+        s = g.wait(lambda s: not s["moving"] and not s["busy"], 60, "the balls to stop")
+        check(s["positions"] != before, f"the shot moved the balls ({s['last_shot']!r})")
+        g.screenshot("practice-shot.png")
+        g.click_widget("Try again")
+        s = g.wait(lambda s: s["positions"] == before, 10, "the position before the shot")
+        check(True, "Try again puts back the position before the shot, every number")
+        g.click_widget("Save position")
+        s = g.wait(lambda s: "Saved the position" in s["link_note"], 10, "the save")
+        path = os.path.join(work, "data", "coolaaber", "practice-position.json")
+        with open(path) as f:
+            saved = json.load(f)
+        check({str(b["id"]): b["pos"] for b in saved["balls"]} == before, "the file holds the position exactly")
+        saved["strike"] = {"speed": 2.0, "heading_deg": 0.0}
+        out = subprocess.run([os.environ["COOLAABER_CLI"], "simulate"], input=json.dumps(saved), capture_output=True,
+                             text=True, timeout=60)
+        check(out.returncode == 0 and "final" in json.loads(out.stdout), f"coolaaber-cli simulate reads it ({out.stderr.strip()!r})")
+        nine = s["ball_px"]["9"]
+        drag(g, nine, (nine[0] + 120, nine[1] - 50))
+        s = g.wait(lambda s: s["positions"] != before, 10, "the 9 moved")
+        g.click_widget("Load position")
+        s = g.wait(lambda s: "Loaded the position" in s["link_note"], 10, "the load")
+        check(s["positions"] == before, "Load position brings the saved position back")
+        g.screenshot("practice-loaded.png")
+    finally:
+        g.close()
+
+
 if __name__ == "__main__":
     test, exe, work = sys.argv[1], sys.argv[2], sys.argv[3]
     {"controls": controls, "game": whole_game, "hinted": hinted_game, "display": no_display,
      "choice": no_choice_after_scratch, "kitchen": kitchen_foul, "guide": guide_marks,
-     "resize": resize}[test](exe, work)
+     "resize": resize, "shot": shared_shot,
+     "practice": practice}[test](exe, work)
     print("passed")

@@ -82,6 +82,17 @@ TEST(Picking, TheCentreOfTheViewIsWhereTheCameraLooks) {
     EXPECT_GT(up->y, p->y);  // y is up the screen
 }
 
+TEST(Picking, APointIsSeenAtThePixelThatPicksIt) {
+    const physics::Table table = physics::build_table(*physics::table_preset("9ft"));
+    const render::Camera cam = render::overhead_camera(table, 4.0f / 3.0f);
+    const auto px = app::screen_point(cam, 800, 600, {0.7, 0.4}, 0.0285);
+    ASSERT_TRUE(px.has_value());
+    const auto back = app::table_point(cam, 800, 600, (*px)[0], (*px)[1], 0.0285);
+    ASSERT_TRUE(back.has_value());
+    EXPECT_NEAR(back->x, 0.7, 1e-4);
+    EXPECT_NEAR(back->y, 0.4, 1e-4);
+}
+
 TEST(CameraRig, ChangeViewGlidesToTheCueBallViewAndBack) {
     const physics::Table table = physics::build_table(*physics::table_preset("9ft"));
     app::CameraRig rig;

@@ -68,6 +68,24 @@ TEST(ShotLink, ReadsBackToTheSameShotBitForBit) {
     }
 }
 
+TEST(ShotLink, ASessionAtTheLinksPositionPlaysThatShot) {
+    for (rules::Game game : {rules::Game::eight_ball, rules::Game::nine_ball}) {
+        const SharedShot shot = read_shot_link(shot_link(shot_from_a_game(game, 3)));
+        Config c = config_for(game, 99);
+        c.options = shot.options;
+        c.table = shot.table;
+        c.params = shot.params;
+        Session s = Session::at_position(c, shot.state);
+        EXPECT_EQ(s.phase(), Phase::shoot);
+        EXPECT_EQ(s.to_act(), shot.state.shooter);
+        EXPECT_TRUE(s.history().empty());
+        const ShotRecord& r = s.play(shot.stroke);
+        EXPECT_EQ(r.before.positions, shot.state.positions);
+        ASSERT_NE(s.last_shot(), nullptr);
+        EXPECT_TRUE(same_events(*s.last_shot(), play(shot))) << "the very shot of the link";
+    }
+}
+
 std::string error_of(const std::string& link) {
     try {
         read_shot_link(link);

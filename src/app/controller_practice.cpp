@@ -1,0 +1,105 @@
+// The controller in practice mode (game/practice.hpp): the practice holds the position and
+// plays the shots; the session mirrors the position (A always to shoot, the cue ball on the
+// table) so that drawing, aiming and the aim guide work as in a game.
+#include <fmt/format.h>
+
+#include "app/controller.hpp"
+
+namespace app {
+
+namespace {
+
+game::Session mirror_of(const game::Practice& p, const game::Config& was) {
+    game::Config c;
+    c.game = p.game();
+    c.table = p.table_spec();
+    c.params = p.params();
+    c.names = {"You", "You"};
+    c.seed = was.seed;
+    rules::GameState s = rules::initial_state(c.game, rules::Player::A);
+    s.shot = rules::Shot::normal;
+    s.cue_ball = rules::CueBall::on_table;
+    s.positions = p.balls();
+    s.on_table.clear();
+    for (const auto& [id, pos] : p.balls())
+        if (id != 0) s.on_table.insert(id);
+    return game::Session::at_position(std::move(c), std::move(s));
+}
+
+std::string practice_words(const physics::Shot& shot) {
+    std::vector<std::string> down;
+    for (const physics::BallState& b : shot.final_states())
+        if (b.motion == physics::Motion::pocketed)
+            down.push_back(b.id == 0 ? "the cue ball (back on the head spot)"
+                                     : fmt::format("the {}", b.id));
+    if (down.empty()) return "Nothing was pocketed.";
+    return fmt::format("Pocketed {}.", fmt::join(down, ", "));
+}
+
+}  // namespace
+
+void Controller::start_practice(game::Practice practice, ControllerOptions options) {
+    options.players = {"human", "human"};
+    game::Config was = session_.config();
+    was.seed = options.seed;
+    replace(mirror_of(practice, was), std::move(options));
+    practice_ = std::move(practice);
+    begin_turn();
+}
+
+void Controller::mirror_practice() {
+    session_ = mirror_of(*practice_, session_.config());
+}
+
+void Controller::play_practice(const physics::Stroke& stroke) {
+    const physics::Shot* shot = nullptr;
+    try {
+        shot = &practice_->play(stroke);
+    } catch (const std::invalid_argument& e) {
+        refusal_ = e.what();
+        return;
+    }
+    refusal_.clear();
+    info_at_strike_ = info();
+    words_at_strike_ = last_words_;
+    replaying_ = false;
+    preview_.reset();
+    playback_.start(*shot, stroke_lead);
+    orientations_.begin_shot();
+    at_strike_ = orientations_;
+    ++shot_serial_;
+    settled_ = false;
+    if (options_.playback_speed <= 0.0) skip();
+}
+
+void Controller::finish_practice_shot() {
+    last_words_ = practice_words(playback_.shot());
+    mirror_practice();
+    begin_turn();
+}
+
+bool Controller::move_ball(int id, physics::Vec2 pos) {
+    if (!practice_ || !human_to_act()) return false;
+    if (std::optional<std::string> why = practice_->check_move(id, pos)) {
+        refusal_ = *why;
+        return false;
+    }
+    practice_->move(id, pos);
+    refusal_.clear();
+    mirror_practice();
+    refresh_preview();
+    return true;
+}
+
+void Controller::try_again() {
+    if (!practice_ || busy() || !practice_->can_try_again()) return;
+    practice_->try_again();
+    mirror_practice();
+    playback_.clear();
+    orientations_.reset();
+    last_words_ = "The position before the last shot is back.";
+    refusal_.clear();
+    begin_turn();
+}
+
+}  // namespace app
