@@ -36,8 +36,8 @@ std::size_t skip_digits(std::string_view t, std::size_t i) {
     return i;
 }
 
-/// [-]digits[.digits][(e|E)[±]digits], with a digit before or after the point: no spaces, '+',
-/// hexadecimal or words (what strtod would also take).
+/// [-]digits[.digits][(e|E)[±]digits], with a digit before or after the point; not spaces, '+',
+/// hexadecimal or words, which strtod alone would take.
 bool is_decimal(std::string_view t) {
     std::size_t i = t.starts_with('-') ? 1 : 0;
     const std::size_t int_end = skip_digits(t, i);
