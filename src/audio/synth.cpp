@@ -13,11 +13,11 @@ std::size_t index_at(const Pcm& pcm, double t) {
     return static_cast<std::size_t>(std::max(0.0, std::round(t * pcm.rate)));
 }
 
+}  // namespace
+
 double white(Rng& rng) {
     return rng.uniform(-1.0, 1.0);
 }
-
-}  // namespace
 
 void add_modes(Pcm& out, const Contact& contact, const Mode* modes, int count, Rng& rng) {
     const std::size_t first = index_at(out, contact.start);
