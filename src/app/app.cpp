@@ -446,7 +446,8 @@ int run_window(const AppOptions& options) {
             SDL_Event e;
             bool have = false;
             if (!animating)
-                have = SDL_WaitEventTimeout(&e, t.controller.computer_thinking() ? 30 : 500) != 0;
+                have = SDL_WaitEventTimeout(
+                           &e, t.controller.computer_thinking() || sound.pending() ? 30 : 500) != 0;
             bool had_event = false;
             while (have || SDL_PollEvent(&e)) {
                 have = false;
@@ -521,6 +522,8 @@ int run_window(const AppOptions& options) {
             sound.set_muted(!t.setup.settings.sound);
             if (t.controller.moving() && t.controller.playback().time() >= 0.0)
                 sound.update(t.controller.playback().time());
+            else if (!t.controller.moving())
+                sound.advance(dt);  // a potted ball still runs to the return
             const bool redraw = had_event || animating || signature() != before;
             if (!redraw) continue;
 
