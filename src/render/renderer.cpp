@@ -583,7 +583,7 @@ RenderSettings& Renderer::settings() {
 void Renderer::draw(const FrameView& frame, int width, int height) {
     Impl& m = *impl_;
     if (m.settings.exposure != m.baked_exposure) m.bake_cloth_light();
-    const bool moving = m.camera_moved(frame, width, height);
+    const bool moving = m.camera_moved(frame, width, height) || frame.camera_moving;
     const float scale = m.moving_scale.scale();
     const glm::ivec2 small{static_cast<int>(static_cast<float>(width) * scale),
                            static_cast<int>(static_cast<float>(height) * scale)};

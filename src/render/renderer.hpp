@@ -76,6 +76,10 @@ struct FrameView {
     /// Ids of the pocketed object balls, in the order they dropped: drawn in the ball-return
     /// tray along the table's south side (outside the rails), numbers up.
     std::span<const int> tray;
+    /// The caller's word that the camera moves, or stopped only a moment ago and may move on
+    /// (aiming): drawn as a moving camera (smaller, no table cache) even when it equals the
+    /// last frame's, so that a pause between two mouse moves costs no full-quality frame.
+    bool camera_moving = false;
 };
 
 /// Quality switches (defaults: everything on).
