@@ -6,7 +6,9 @@
 //                          ball_in_hand, aim_overhead, cushion, rail_view, raised_cue, pocket,
 //                          room)
 // --moving-camera turns the eye a little every frame (aiming in the cue-ball view): the frame
-// is then drawn at --moving-scale of the size (RenderSettings::moving_scale) and scaled up.
+// is then drawn smaller and scaled up: at RenderSettings::moving_scale, stepping down toward
+// moving_scale_lowest while frames are over their budget, as in the game; --moving-scale X
+// fixes it at X.
 #include <epoxy/gl.h>
 
 #include <algorithm>
@@ -31,6 +33,7 @@ struct Options {
     bool cache_table = true;
     bool moving_camera = false;  ///< the eye turns round the target a little every frame
     float moving_scale = render::RenderSettings{}.moving_scale;
+    bool fixed_scale = false;  ///< --moving-scale given: no adapting to the frame time
     std::string png, scene = "mid_game";
 };
 
@@ -56,6 +59,7 @@ std::optional<Options> parse(int argc, char** argv) {
             o.moving_camera = true;
         } else if (a == "--moving-scale" && more) {
             o.moving_scale = std::clamp(static_cast<float>(std::atof(argv[++i])), 0.1f, 1.0f);
+            o.fixed_scale = true;
         } else if (a == "--scene" && more) {
             o.scene = argv[++i];
         } else if (a == "--png" && more) {
@@ -91,10 +95,11 @@ render::DemoScene scene_named(const std::string& name, float aspect, int k, int 
 
 // Draws the scenes in turn (after 5 frames of warm-up); the frame times (unit: ms), sorted.
 std::vector<double> frame_times(const Options& o, const std::vector<render::DemoScene>& scenes,
-                                render::OffscreenTarget& target) {
+                                render::OffscreenTarget& target, float& reached) {
     render::RenderSettings settings;
     settings.cache_table = o.cache_table;
     settings.moving_scale = o.moving_scale;
+    if (o.fixed_scale) settings.moving_scale_lowest = o.moving_scale;
     render::Renderer renderer(scenes.front().table, scenes.front().ball_radius, settings);
     std::vector<double> ms;
     for (int f = 0; f < o.frames + 5; ++f) {
@@ -114,6 +119,7 @@ std::vector<double> frame_times(const Options& o, const std::vector<render::Demo
         const auto end = std::chrono::steady_clock::now();
         if (f >= 5) ms.push_back(std::chrono::duration<double, std::milli>(end - start).count());
     }
+    reached = renderer.moving_scale();
     std::sort(ms.begin(), ms.end());
     return ms;
 }
@@ -132,17 +138,18 @@ int main(int argc, char** argv) {
         for (int k = 0; k < distinct; ++k)
             scenes.push_back(scene_named(o->scene, aspect, k, distinct));
         render::OffscreenTarget target(o->width, o->height, o->samples);
-        const std::vector<double> ms = frame_times(*o, scenes, target);
+        float reached = 1.0f;
+        const std::vector<double> ms = frame_times(*o, scenes, target, reached);
         if (!o->png.empty()) render::write_png(o->png, render::read_pixels(o->width, o->height));
         const double median = ms[ms.size() / 2];
         const double p95 = ms[std::min(ms.size() - 1, ms.size() * 95 / 100)];
         std::printf(
             "{\"size\":\"%dx%d\",\"frames\":%d,\"samples\":%d,\"table_cache\":%s,"
-            "\"moving_camera\":%s,\"moving_scale\":%.2f,"
+            "\"moving_camera\":%s,\"moving_scale\":%.2f,\"adaptive\":%s,\"scale_reached\":%.4f,"
             "\"renderer\":\"%s\",\"median_ms\":%.3f,\"p95_ms\":%.3f,\"fps\":%.1f}\n",
             o->width, o->height, o->frames, target.samples(), o->cache_table ? "true" : "false",
-            o->moving_camera ? "true" : "false", o->moving_scale, context.renderer_name().c_str(),
-            median, p95, 1000.0 / median);
+            o->moving_camera ? "true" : "false", o->moving_scale, o->fixed_scale ? "false" : "true",
+            reached, context.renderer_name().c_str(), median, p95, 1000.0 / median);
     } catch (const std::invalid_argument& e) {
         std::fprintf(stderr, "%s\n", e.what());
         return 2;

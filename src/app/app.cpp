@@ -433,6 +433,11 @@ int run_window(const AppOptions& options) {
         int sound_serial = t.controller.shot_serial();
         int warm_frames = 2;
         bool drew_moving = false;  // the last frame was drawn for a moving camera (smaller, 1×)
+        // The full-quality frame waits until the camera has been still this long: aiming, the
+        // mouse pauses between moves, and a full frame at each pause would halve the rate.
+        const auto settle = std::chrono::milliseconds(200);
+        auto last_motion = std::chrono::steady_clock::now();
+        auto settled = [&] { return std::chrono::steady_clock::now() - last_motion >= settle; };
         long frames = 0;
         auto last = std::chrono::steady_clock::now();
         auto over_panel = [&](double x) { return x >= painter->view_width(); };
@@ -441,12 +446,15 @@ int run_window(const AppOptions& options) {
             // ---- Events: wait for one when nothing moves
             // A camera that has just stopped gets one more frame, drawn in full.
             const bool animating = t.controller.moving() || t.rig.animating() || warm_frames > 0 ||
-                                   drew_moving ||
+                                   (drew_moving && settled()) ||
                                    (t.controller.busy() && !t.controller.computer_thinking());
             SDL_Event e;
             bool have = false;
             if (!animating)
-                have = SDL_WaitEventTimeout(&e, t.controller.computer_thinking() ? 30 : 500) != 0;
+                have = SDL_WaitEventTimeout(&e, t.controller.computer_thinking() || sound.pending()
+                                                    ? 30
+                                                : drew_moving ? 20
+                                                              : 500) != 0;
             bool had_event = false;
             while (have || SDL_PollEvent(&e)) {
                 have = false;
@@ -521,7 +529,10 @@ int run_window(const AppOptions& options) {
             sound.set_muted(!t.setup.settings.sound);
             if (t.controller.moving() && t.controller.playback().time() >= 0.0)
                 sound.update(t.controller.playback().time());
-            const bool redraw = had_event || animating || signature() != before;
+            else if (!t.controller.moving())
+                sound.advance(dt);  // a potted ball still runs to the return
+            const bool redraw =
+                had_event || animating || signature() != before || (drew_moving && settled());
             if (!redraw) continue;
 
             // ---- Draw
@@ -553,8 +564,10 @@ int run_window(const AppOptions& options) {
                 static_cast<float>(painter->view_width()) / static_cast<float>(painter->height());
             const render::Camera previous = t.last_camera;
             t.last_camera = t.camera(aspect);
-            const bool camera_moving = t.rig.animating() || previous.eye != t.last_camera.eye ||
-                                       previous.target != t.last_camera.target;
+            bool camera_moving = t.rig.animating() || previous.eye != t.last_camera.eye ||
+                                 previous.target != t.last_camera.target;
+            if (camera_moving) last_motion = std::chrono::steady_clock::now();
+            camera_moving = camera_moving || (drew_moving && !settled());
             drew_moving = camera_moving;
             sound.set_listener(listener_of(t.last_camera));
             const SceneFrame scene =

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "app/cue_clearance.hpp"
 #include "app/plain_words.hpp"
 #include "app/seats.hpp"
 #include "game/stroke_noise.hpp"
@@ -87,7 +88,21 @@ physics::Stroke Controller::stroke_of(const Aim& a) const {
     k.side = a.side;
     k.top = a.top;
     k.elevation_deg = a.elevation_deg;
-    return k;
+    return played(k);
+}
+
+physics::Stroke Controller::played(const physics::Stroke& stroke) const {
+    const auto cue = session_.state().positions.find(0);
+    if (cue == session_.state().positions.end()) return stroke;
+    return over_the_rail(session_.table(), session_.config().params.ball_radius, cue->second,
+                         stroke);
+}
+
+double Controller::forced_elevation_deg() const {
+    const auto cue = session_.state().positions.find(0);
+    if (cue == session_.state().positions.end()) return 0.0;
+    return rail_forced_elevation_deg(session_.table(), session_.config().params.ball_radius,
+                                     cue->second, stroke_of(aim_));
 }
 
 std::vector<physics::BallState> Controller::balls_now() const {
@@ -319,7 +334,9 @@ void Controller::update(double dt) {
         if (computer_aim_left_ <= 0.0 || options_.playback_speed <= 0.0) {
             const rules::Player p = *session_.to_act();
             const double scale = options_.noise * computers_[rules::index(p)]->execution_noise();
-            play(game::with_noise(computer_decision_->stroke, scale, noise_rng_));
+            // The computer's cue is raised by the rail as a human's is (a shared link's
+            // stroke is played exactly as it was recorded).
+            play(played(game::with_noise(computer_decision_->stroke, scale, noise_rng_)));
         }
     }
 }

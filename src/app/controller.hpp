@@ -110,7 +110,11 @@ class Controller {
     const std::string& seat_kind(rules::Player p) const {
         return options_.players[rules::index(p)];
     }
+    /// The stroke `aim` plays: its elevation raised to the rail's where the rail forces the
+    /// cue up (cue_clearance.hpp), as for every stroke played.
     physics::Stroke stroke_of(const Aim& aim) const;
+    /// The elevation the rail forces on the cue as aimed now (unit: deg; 0: none).
+    double forced_elevation_deg() const;
 
     // ---- Human actions (ignored when it is not a human's turn; refusals go to refusal())
     void turn_aim(double delta_deg);
@@ -165,6 +169,8 @@ class Controller {
     void begin_turn();
     void refresh_preview();
     void play(const physics::Stroke& stroke);
+    /// `stroke` as the cue can play it from where the cue ball lies (over_the_rail).
+    physics::Stroke played(const physics::Stroke& stroke) const;
     void finish_shot();
     void prepare_human_ball_in_hand();
     void launch_computer();

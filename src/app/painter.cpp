@@ -32,7 +32,9 @@ void Painter::draw_table(const SceneFrame& scene, const render::Camera& camera,
         moving_ = std::make_unique<render::OffscreenTarget>(view_width(), height_, 1);
     render::OffscreenTarget& target = camera_moving ? *moving_ : *view_;
     target.bind();
-    renderer_.draw(scene.view(camera), view_width(), height_);
+    render::FrameView view = scene.view(camera);
+    view.camera_moving = camera_moving;
+    renderer_.draw(view, view_width(), height_);
     target.resolve();  // leaves the resolved table image bound for reading
 }
 

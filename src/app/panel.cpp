@@ -289,6 +289,12 @@ void stroke_controls(const Controller& c, PanelActions& out) {
     ImGui::SetNextItemWidth(-1.0f);
     if (ImGui::SliderFloat("##elevation", &elevation, 0.0f, 60.0f, "%.0f deg"))
         out.elevation_deg = elevation;
+    // The stroke is played at the elevation in use: the rail's where it lifts the cue.
+    // Always one line, so that the panel does not jump as the aim turns.
+    if (const double forced = c.forced_elevation_deg(); forced > c.aim().elevation_deg)
+        ImGui::TextWrapped("In use: %.1f deg (the rail lifts the cue)", forced);
+    else
+        ImGui::TextDisabled("In use: as set");
     if (with_rules && s.push_out_available() && mine) {
         bool push = s.state().shot == rules::Shot::push_out;
         if (ImGui::Checkbox("Push-out", &push)) out.push_out = push;

@@ -127,9 +127,11 @@ std::string shot_words(const game::Session& session, const game::ShotRecord& r) 
         if (d.ball != 0) down.push_back(d.ball);
     std::string out;
     if (r.push_out()) out = who + " pushed out. ";
+    const bool broke = r.before.shot == rules::Shot::break_shot;
     if (!down.empty())
-        out += fmt::format("{} pocketed {}. ", who, ball_list(down));
-    else if (r.before.shot == rules::Shot::break_shot)
+        out += fmt::format("{} {} {}. ", who, broke ? "broke and pocketed" : "pocketed",
+                           ball_list(down));
+    else if (broke)
         out += fmt::format("{} broke: nothing dropped. ", who);
     else if (!r.verdict.foul)
         out += fmt::format("{} pocketed nothing. ", who);

@@ -1,6 +1,7 @@
 #include "audio/cues.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "audio/rng.hpp"
@@ -52,6 +53,29 @@ physics::Vec3 where(const physics::Event& e, double ball_radius) {
     return physics::lift(p, ball_radius);
 }
 
+/// A different variant from this kind's previous one, so two sounds in a row differ.
+int next_variant(std::array<int, kSoundKindCount>& last_variant, SoundKind kind, int variants,
+                 Rng& rng) {
+    int& last = last_variant[static_cast<std::size_t>(kind)];
+    const int n = std::max(1, variants);
+    last = (last < 0 || n == 1) ? rng.below(n) : (last + 1 + rng.below(n - 1)) % n;
+    return last;
+}
+
+/// The potted ball's run from the pocket to the ball return, heard after its drop.
+Cue return_cue(const Cue& drop, const CueOptions& o, std::array<int, kSoundKindCount>& last,
+               Rng& rng) {
+    Cue c = drop;
+    const physics::Vec3 d = o.ball_return - drop.position;
+    c.time = drop.time + o.return_settle + std::hypot(d.x, d.y) / o.return_speed;
+    c.kind = SoundKind::ball_return;
+    c.variant = next_variant(last, c.kind, o.variants, rng);
+    c.gain = o.return_gain;
+    c.pitch = static_cast<float>(rng.jitter(o.pitch_jitter));
+    c.position = o.ball_return;
+    return c;
+}
+
 }  // namespace
 
 float loudness(double speed, double full, double exponent) {
@@ -72,11 +96,7 @@ std::vector<Cue> cues_for_shot(const physics::Shot& shot, const CueOptions& o) {
         Cue c;
         c.time = e.time;
         c.kind = impact.kind;
-        // A different variant from this kind's previous one, so two hits in a row differ.
-        int& last = last_variant[static_cast<std::size_t>(impact.kind)];
-        const int n = std::max(1, o.variants);
-        c.variant = (last < 0 || n == 1) ? rng.below(n) : (last + 1 + rng.below(n - 1)) % n;
-        last = c.variant;
+        c.variant = next_variant(last_variant, impact.kind, o.variants, rng);
         c.gain = loudness(impact.speed, impact.full, o.loudness_exponent);
         const double doublings = std::log2(std::max(impact.speed, 1e-3) / o.pitch_reference);
         const double pitch = (1.0 + o.pitch_per_doubling * doublings) * rng.jitter(o.pitch_jitter);
@@ -85,7 +105,10 @@ std::vector<Cue> cues_for_shot(const physics::Shot& shot, const CueOptions& o) {
         c.speed = impact.speed;
         c.event = i;
         cues.push_back(c);
+        if (c.kind == SoundKind::pocket_drop) cues.push_back(return_cue(c, o, last_variant, rng));
     }
+    std::stable_sort(cues.begin(), cues.end(),
+                     [](const Cue& a, const Cue& b) { return a.time < b.time; });
     return cues;
 }
 

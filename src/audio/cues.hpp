@@ -33,8 +33,16 @@ struct CueOptions {
     double pitch_per_doubling = 0.04;  ///< pitch rises this fraction per doubling of speed
     double pitch_reference = 1.0;      ///< speed heard at the synthesized pitch (unit: m/s)
     double pitch_jitter = 0.03;        ///< random pitch spread per cue (fraction)
-    int variants = 6;                  ///< the bank's variants per kind
-    std::uint64_t seed = 1;            ///< for the variant and pitch draws
+    /// Where a potted ball ends up: the ball return's tray, under the south apron of a 9 ft
+    /// table (table frame; unit: m). Its clatter comes return_settle after the drop plus the
+    /// run from the pocket at return_speed.
+    physics::Vec3 ball_return{1.27, -0.16, -0.20};
+    double return_speed = 0.9;  ///< (unit: m/s) along the channel
+    double return_settle =
+        0.35;  ///< the ball settling in the pocket and finding the channel (unit: s)
+    float return_gain = 0.4f;  ///< every run to the return sounds alike, whatever the drop
+    int variants = 6;          ///< the bank's variants per kind
+    std::uint64_t seed = 1;    ///< for the variant and pitch draws
 };
 
 /// Gain for an impact at `speed` heard at full loudness at `full`: (speed/full)^exponent,
@@ -42,7 +50,8 @@ struct CueOptions {
 float loudness(double speed, double full, double exponent);
 
 /// The cues of a shot, in time order: strike (and miscue), ball–ball, cushion (a jaw gives
-/// a rattle), pocket. Transitions are silent; so are impacts slower than min_speed.
+/// a rattle), pocket (the drop, and later the ball's run to the return). Transitions are
+/// silent; so are impacts slower than min_speed.
 std::vector<Cue> cues_for_shot(const physics::Shot& shot, const CueOptions& options = {});
 
 /// Plays a cue list forward in time: due(t) hands out the cues whose time has come since the

@@ -67,6 +67,8 @@ struct Engine::Backend {
     int variants = 1;
     std::vector<ALuint> buffers;  // kind × variants
     std::vector<ALuint> sources;
+    std::vector<ALuint> roll_sources;       // looping, one per ball of the shot
+    std::vector<float> roll_gain;           // each roll source's gain at the last update
     std::vector<std::uint64_t> started_at;  // per source: order in which it was started
     std::uint64_t started = 0;
 
@@ -96,12 +98,55 @@ struct Engine::Backend {
         sources.resize(static_cast<std::size_t>(o.sources > 0 ? o.sources : 1));
         alGenSources(static_cast<ALsizei>(sources.size()), sources.data());
         started_at.assign(sources.size(), 0);
+        roll_sources.resize(static_cast<std::size_t>(std::max(0, o.rolling_sources)));
+        if (!roll_sources.empty())
+            alGenSources(static_cast<ALsizei>(roll_sources.size()), roll_sources.data());
+        roll_gain.assign(roll_sources.size(), 0.0f);
         alDistanceModel(AL_INVERSE_DISTANCE_CLAMPED);
-        for (ALuint s : sources) {
+        // Each ball its own variant of the rumble, so that balls rolling together don't sum
+        // into one louder, phasing noise.
+        for (std::size_t i = 0; i < roll_sources.size(); ++i) {
+            const auto v = static_cast<int>(i) % variants;
+            const auto k = static_cast<int>(SoundKind::cloth_roll);
+            alSourcei(roll_sources[i], AL_BUFFER,
+                      static_cast<ALint>(buffers[static_cast<std::size_t>(k * variants + v)]));
+            alSourcei(roll_sources[i], AL_LOOPING, AL_TRUE);
+        }
+        for (ALuint s : all_sources()) {
             alSourcef(s, AL_REFERENCE_DISTANCE, static_cast<ALfloat>(o.reference_distance));
             alSourcef(s, AL_ROLLOFF_FACTOR, static_cast<ALfloat>(o.rolloff));
             alSourcei(s, AL_SOURCE_RELATIVE, AL_FALSE);
         }
+    }
+
+    std::vector<ALuint> all_sources() const {
+        std::vector<ALuint> all = sources;
+        all.insert(all.end(), roll_sources.begin(), roll_sources.end());
+        return all;
+    }
+
+    /// Sets ball `i`'s rumble; a source silent for two updates in a row is stopped (the
+    /// gain goes to 0 first, so that stopping it makes no click).
+    void roll(std::size_t i, const Roll& r) {
+        const ALuint s = roll_sources[i];
+        if (r.gain <= 0.0f && roll_gain[i] <= 0.0f) {
+            alSourceStop(s);
+            return;
+        }
+        alSourcef(s, AL_GAIN, r.gain);
+        alSourcef(s, AL_PITCH, r.pitch);
+        alSource3f(s, AL_POSITION, static_cast<ALfloat>(r.position.x),
+                   static_cast<ALfloat>(r.position.y), static_cast<ALfloat>(r.position.z));
+        ALint state = AL_STOPPED;
+        alGetSourcei(s, AL_SOURCE_STATE, &state);
+        if (state != AL_PLAYING) alSourcePlay(s);
+        roll_gain[i] = r.gain;
+    }
+
+    void stop_all() {
+        const std::vector<ALuint> all = all_sources();
+        alSourceStopv(static_cast<ALsizei>(all.size()), all.data());
+        std::fill(roll_gain.begin(), roll_gain.end(), 0.0f);
     }
 
     /// A free source, else the one started longest ago.
@@ -118,9 +163,10 @@ struct Engine::Backend {
 
     ~Backend() {
         bind();
-        if (!sources.empty()) {
-            alSourceStopv(static_cast<ALsizei>(sources.size()), sources.data());
-            alDeleteSources(static_cast<ALsizei>(sources.size()), sources.data());
+        const std::vector<ALuint> all = all_sources();
+        if (!all.empty()) {
+            alSourceStopv(static_cast<ALsizei>(all.size()), all.data());
+            alDeleteSources(static_cast<ALsizei>(all.size()), all.data());
         }
         if (!buffers.empty()) alDeleteBuffers(static_cast<ALsizei>(buffers.size()), buffers.data());
         alcMakeContextCurrent(nullptr);
@@ -217,14 +263,40 @@ void Engine::start(const physics::Shot& shot) {
     CueOptions cue_options = options_.cues;
     cue_options.variants = options_.bank.variants;
     schedule_ = CueSchedule(cues_for_shot(shot, cue_options));
+    shot_ = shot;
+    time_ = 0.0;
     stop();
 }
 
 void Engine::update(double playback_time) {
     // Always advance, muted or silent, so that unmuting does not replay a backlog.
+    time_ = playback_time;
     const std::span<const Cue> due = schedule_.due(playback_time);
     if (!backend_ || muted_) return;
     for (const Cue& c : due) play(c);
+    update_rolling(playback_time);
+}
+
+void Engine::advance(double dt) {
+    if (!shot_) return;
+    // A playback cut short (skipped to its end) has no tail: its later sounds are dropped.
+    const double end =
+        shot_->rest_time().value_or(shot_->events().empty() ? 0.0 : shot_->events().back().time);
+    if (time_ < end - 0.25) {
+        schedule_ = CueSchedule();
+        shot_.reset();
+        stop();
+        return;
+    }
+    update(time_ + dt);
+}
+
+void Engine::update_rolling(double playback_time) {
+    if (!backend_ || muted_ || !shot_) return;
+    Backend& b = *backend_;
+    b.bind();
+    const std::vector<Roll> rolls = rolling_at(*shot_, playback_time, options_.rolling);
+    for (std::size_t i = 0; i < rolls.size() && i < b.roll_sources.size(); ++i) b.roll(i, rolls[i]);
 }
 
 void Engine::play(const Cue& cue) {
@@ -249,7 +321,7 @@ void Engine::play(const Cue& cue) {
 void Engine::stop() {
     if (!backend_) return;
     backend_->bind();
-    alSourceStopv(static_cast<ALsizei>(backend_->sources.size()), backend_->sources.data());
+    backend_->stop_all();
 }
 
 void Engine::render(std::span<float> stereo) {

@@ -9,10 +9,12 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 
 #include "audio/cues.hpp"
+#include "audio/rolling.hpp"
 #include "audio/sounds.hpp"
 #include "physics/shot.hpp"
 #include "physics/vec.hpp"
@@ -35,6 +37,8 @@ struct EngineOptions {
                                       ///< keeps far sounds louder than 1/r)
     SoundBankOptions bank;            ///< the synthesized sounds
     CueOptions cues;                  ///< loudness, pitch and variation of the cues
+    RollOptions rolling;              ///< the balls' rumble on the cloth
+    int rolling_sources = 22;         ///< looping sources for the rumble: one per ball (snooker)
 };
 
 class Engine {
@@ -62,8 +66,15 @@ class Engine {
     /// A new shot to play back from time 0 (stops the sounds of the previous one).
     void start(const physics::Shot& shot);
     /// Plays the cues whose time has come (call once per frame with the playback time, in s
-    /// from the strike). A sound starts at the first update at or after its cue's time.
+    /// from the strike) and sets each ball's rumble from its speed then. A sound starts at the
+    /// first update at or after its cue's time.
     void update(double playback_time);
+    /// Once the playback has ended (its time stands still), moves the shot's clock on by `dt`
+    /// (unit: s), so that the sounds after it (a potted ball reaching the return) still come.
+    /// A playback that stopped more than 0.25 s before the shot's end (skipped) drops them.
+    void advance(double dt);
+    /// Whether the shot still has sounds to come (the app keeps its clock going until then).
+    bool pending() const { return shot_.has_value() && !schedule_.finished(); }
     /// Plays one cue now (its time is ignored).
     void play(const Cue& cue);
     /// Stops every sound.
@@ -82,7 +93,11 @@ class Engine {
     std::unique_ptr<Backend> backend_;
     EngineOptions options_;
     CueSchedule schedule_;
+    std::optional<physics::Shot> shot_;  ///< the shot playing, for the rumble
+    double time_ = 0.0;                  ///< the last update's playback time (unit: s)
     bool muted_ = false;
+
+    void update_rolling(double playback_time);
 };
 
 }  // namespace audio

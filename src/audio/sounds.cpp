@@ -1,6 +1,8 @@
 #include "audio/sounds.hpp"
 
 #include <cassert>
+#include <cmath>
+#include <numbers>
 
 #include "audio/rng.hpp"
 #include "audio/synth.hpp"
@@ -55,11 +57,12 @@ Pcm cushion_thump(std::uint64_t seed, int rate) {
     return p;
 }
 
-// A hard knock as the ball lands in the pocket, then the rumble of it rolling down the return
-// track; the rumble fades in slowly so that it adds no second onset.
+// The ball falls past the jaws: a hard knock as it lands on the pocket's liner, then it rattles
+// against the jaws and the leather as it settles (ticks growing closer and softer), all within
+// half a second; the run to the ball return is its own sound (ball_return), heard later.
 Pcm pocket_drop(std::uint64_t seed, int rate) {
     Rng rng(seed);
-    Pcm p = blank(rate, 1.3);
+    Pcm p = blank(rate, 0.5);
     const Contact hit{0.0, 2e-4};
     const Mode modes[] = {vary(rng, 140, 0.070, 1.0), vary(rng, 265, 0.050, 0.8),
                           vary(rng, 520, 0.030, 0.5), vary(rng, 1100, 0.015, 0.35),
@@ -67,16 +70,72 @@ Pcm pocket_drop(std::uint64_t seed, int rate) {
     synth::add_modes(p, hit, modes, 5, rng);
     synth::add_noise_burst(p, hit, 0.010 * rng.jitter(0.2), 0.8,
                            Biquad::lowpass(rate, 1500 * rng.jitter(0.1), 0.7), rng, 0.08);
-    synth::Rumble roll;
-    roll.start = 0.10 * rng.jitter(0.2);
-    roll.rise = 0.25;
-    roll.hold = 0.25 * rng.jitter(0.3);
-    roll.fall = 0.45;
-    roll.amp = 1.0;  // band-passed noise is weak: this puts the rumble about 25 dB under the knock
-    roll.wobble = 0.4;
-    roll.wobble_hz = 3.0 * rng.jitter(0.2);
-    synth::add_rumble(p, roll, Biquad::bandpass(rate, 220 * rng.jitter(0.1), 1.5),
-                      Biquad::lowpass(rate, 450, 0.7), rng);
+    // The rattle: a ball bouncing in the pocket, each bounce shorter (restitution about 0.6).
+    double t = 0.0, gap = 0.07 * rng.jitter(0.2), amp = 0.45;
+    for (int k = 0; k < 6; ++k) {
+        t += gap;
+        const Mode knock[] = {vary(rng, 330, 0.020, amp), vary(rng, 730, 0.012, amp * 0.8),
+                              vary(rng, 2600, 0.004, amp * 0.5), vary(rng, 4100, 0.002, amp * 0.3)};
+        synth::add_modes(p, {t, 2e-4}, knock, 4, rng);
+        gap *= 0.62 * rng.jitter(0.1);
+        amp *= 0.68;
+    }
+    return p;
+}
+
+// Down the channel under the table: the knock of the ball dropping into it, the rumble of its
+// run on hard wood (a wobble once per turn), knocks at the channel's bends, and the clack of it
+// meeting the balls already in the return.
+Pcm ball_return(std::uint64_t seed, int rate) {
+    Rng rng(seed);
+    Pcm p = blank(rate, 1.0);
+    const Contact drop{0.0, 3e-4};
+    const Mode knock[] = {vary(rng, 210, 0.040, 1.0), vary(rng, 480, 0.025, 0.7),
+                          vary(rng, 1250, 0.010, 0.4), vary(rng, 3100, 0.004, 0.25)};
+    synth::add_modes(p, drop, knock, 4, rng);
+    synth::Rumble run;
+    run.start = 0.01;
+    run.rise = 0.04;
+    run.hold = 0.45 * rng.jitter(0.2);
+    run.fall = 0.12;
+    run.amp =
+        2.5;  // band-passed noise is weak: this puts the run's peak about 10 dB under the knock
+    run.wobble = 0.5;
+    run.wobble_hz = 7.0 * rng.jitter(0.2);
+    synth::add_rumble(p, run, Biquad::bandpass(rate, 380 * rng.jitter(0.1), 1.2),
+                      Biquad::lowpass(rate, 1400, 0.7), rng);
+    for (double bend : {0.18, 0.36}) {
+        const Mode b[] = {vary(rng, 260, 0.020, 0.35), vary(rng, 900, 0.008, 0.25)};
+        synth::add_modes(p, {bend * rng.jitter(0.15), 3e-4}, b, 2, rng);
+    }
+    // The clack into the row of balls: phenolic on phenolic, duller through the tray.
+    const double end = run.start + run.rise + run.hold + 0.02;
+    const Mode clack[] = {vary(rng, 3300, 0.006, 0.7), vary(rng, 5100, 0.004, 0.5),
+                          vary(rng, 1150, 0.010, 0.3), vary(rng, 420, 0.020, 0.4)};
+    synth::add_modes(p, {end, 5e-5}, clack, 4, rng);
+    return p;
+}
+
+// A ball rolling on worsted cloth: a low rumble (the ball's weight on the cloth and the slate)
+// with a faint hiss of the nap, 1 s long and seamless (its tail is cross-faded into its head),
+// so that it loops while the ball moves. The engine sets its gain from the ball's speed.
+Pcm cloth_roll(std::uint64_t seed, int rate) {
+    Rng rng(seed);
+    const double loop = 1.0, fade = 0.1;
+    Pcm p = blank(rate, loop + fade);
+    Biquad band = Biquad::bandpass(rate, 140 * rng.jitter(0.1), 0.9);
+    Biquad smooth = Biquad::lowpass(rate, 380, 0.7);
+    Biquad nap = Biquad::bandpass(rate, 1800 * rng.jitter(0.1), 1.5);
+    for (float& x : p.samples)
+        x = static_cast<float>(smooth(band(synth::white(rng))) + 0.03 * nap(synth::white(rng)));
+    // Equal-power cross-fade of the last `fade` into the first, then cut to `loop`.
+    const auto n = static_cast<std::size_t>(loop * rate), m = static_cast<std::size_t>(fade * rate);
+    for (std::size_t i = 0; i < m; ++i) {
+        const double u = (static_cast<double>(i) + 0.5) / static_cast<double>(m);
+        p.samples[i] = static_cast<float>(p.samples[i] * std::sin(0.5 * std::numbers::pi * u) +
+                                          p.samples[n + i] * std::cos(0.5 * std::numbers::pi * u));
+    }
+    p.samples.resize(n);
     return p;
 }
 
@@ -130,6 +189,10 @@ std::string_view to_string(SoundKind kind) {
             return "cue_strike";
         case SoundKind::jaw_rattle:
             return "jaw_rattle";
+        case SoundKind::ball_return:
+            return "ball_return";
+        case SoundKind::cloth_roll:
+            return "cloth_roll";
     }
     return "?";
 }
@@ -146,6 +209,10 @@ float level(SoundKind kind) {
             return 0.50f;
         case SoundKind::jaw_rattle:
             return 0.50f;
+        case SoundKind::ball_return:
+            return 0.35f;  // under the table, behind the apron's wood
+        case SoundKind::cloth_roll:
+            return 0.05f;  // a soft bed, well under the impacts
     }
     return 0.5f;
 }
@@ -167,6 +234,12 @@ Pcm synthesize(SoundKind kind, std::uint64_t seed, int rate) {
             break;
         case SoundKind::jaw_rattle:
             p = jaw_rattle(seed, rate);
+            break;
+        case SoundKind::ball_return:
+            p = ball_return(seed, rate);
+            break;
+        case SoundKind::cloth_roll:
+            p = cloth_roll(seed, rate);
             break;
     }
     normalize(p, level(kind));

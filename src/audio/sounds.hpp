@@ -14,11 +14,13 @@ namespace audio {
 enum class SoundKind : std::uint8_t {
     ball_click,     ///< ball–ball: the bright, short phenolic click
     cushion_thump,  ///< ball–rail: a rubber thump through the wooden rail
-    pocket_drop,    ///< a ball dropping into a pocket, then rolling down the return
+    pocket_drop,    ///< a ball dropping into a pocket and rattling against its jaws and liner
     cue_strike,     ///< the leather cue tip striking the cue ball
     jaw_rattle,     ///< a ball knocking on a pocket jaw (a cushion event at a jaw)
+    ball_return,    ///< a potted ball clattering down the channel into the ball return
+    cloth_roll,     ///< a ball rolling on the cloth: a seamless loop, its gain set by the speed
 };
-inline constexpr int kSoundKindCount = 5;
+inline constexpr int kSoundKindCount = 7;
 std::string_view to_string(SoundKind kind);
 
 /// One sound: `rate` Hz mono, onset at sample 0 (the contact starts there), peak `level(kind)`.

@@ -13,11 +13,11 @@ std::size_t index_at(const Pcm& pcm, double t) {
     return static_cast<std::size_t>(std::max(0.0, std::round(t * pcm.rate)));
 }
 
+}  // namespace
+
 double white(Rng& rng) {
     return rng.uniform(-1.0, 1.0);
 }
-
-}  // namespace
 
 void add_modes(Pcm& out, const Contact& contact, const Mode* modes, int count, Rng& rng) {
     const std::size_t first = index_at(out, contact.start);
@@ -29,11 +29,19 @@ void add_modes(Pcm& out, const Contact& contact, const Mode* modes, int count, R
         // Stop once the mode has decayed by 100 dB.
         const double life = mode.decay * std::log(1e5);
         const std::size_t last = std::min(out.samples.size(), first + index_at(out, life));
+        // By recurrence (a rotation and two decays a sample) instead of an exp, an exp and a
+        // sin a sample: ten times faster, the sound bank being made before the first frame.
+        const double turn = kTwoPi * mode.freq * dt, cos_turn = std::cos(turn),
+                     sin_turn = std::sin(turn);
+        const double fade = std::exp(-dt / mode.decay), settle = std::exp(-dt / contact.attack);
+        double x = std::cos(phase), y = std::sin(phase), amp = mode.amp, unrisen = 1.0;
         for (std::size_t i = first; i < last; ++i) {
-            const double t = static_cast<double>(i - first) * dt;
-            const double rise = 1.0 - std::exp(-t / contact.attack);
-            out.samples[i] += static_cast<float>(mode.amp * rise * std::exp(-t / mode.decay) *
-                                                 std::sin(kTwoPi * mode.freq * t + phase));
+            out.samples[i] += static_cast<float>(amp * (1.0 - unrisen) * y);
+            const double nx = x * cos_turn - y * sin_turn;
+            y = x * sin_turn + y * cos_turn;
+            x = nx;
+            amp *= fade;
+            unrisen *= settle;
         }
     }
 }

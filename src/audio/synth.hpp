@@ -9,6 +9,9 @@
 
 namespace audio::synth {
 
+/// A white-noise sample, uniform in [−1, 1].
+double white(Rng& rng);
+
 /// One mode: a(t) = amp · e^(−t/decay) · sin(2π·freq·t + phase), from `start` on.
 struct Mode {
     double freq = 1000.0;  ///< (unit: Hz)

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -11,6 +12,7 @@
 #include <utility>
 
 #include "render/cue_stick.hpp"
+#include "render/moving_scale.hpp"
 #include "render/pockets.hpp"
 #include "render/room.hpp"
 #include "render/shaders.hpp"
@@ -172,6 +174,7 @@ struct Renderer::Impl {
     GLuint small_fbo = 0, small_colour = 0, small_depth = 0;
     glm::ivec2 small_size{0};
     std::vector<float> last_view;
+    MovingScale moving_scale{1.0f, 1.0f, 0.0};  // set from the settings by the constructor
 
     // Construction, in order.
     void build_hole_grid();
@@ -530,6 +533,8 @@ Renderer::Renderer(const physics::Table& table, double ball_radius, RenderSettin
     m.table = table;
     m.radius = static_cast<float>(ball_radius);
     m.settings = settings;
+    m.moving_scale =
+        MovingScale(settings.moving_scale, settings.moving_scale_lowest, settings.moving_budget_ms);
     m.dims = table_dims(table);
     m.holes = pocket_holes(table);
     m.build_hole_grid();
@@ -567,6 +572,10 @@ Renderer::~Renderer() {
     m.free_small_target();
 }
 
+float Renderer::moving_scale() const {
+    return impl_->moving_scale.scale();
+}
+
 RenderSettings& Renderer::settings() {
     return impl_->settings;
 }
@@ -574,13 +583,15 @@ RenderSettings& Renderer::settings() {
 void Renderer::draw(const FrameView& frame, int width, int height) {
     Impl& m = *impl_;
     if (m.settings.exposure != m.baked_exposure) m.bake_cloth_light();
-    const bool moving = m.camera_moved(frame, width, height);
-    const glm::ivec2 small{static_cast<int>(static_cast<float>(width) * m.settings.moving_scale),
-                           static_cast<int>(static_cast<float>(height) * m.settings.moving_scale)};
-    if (!moving || m.settings.moving_scale >= 1.0f || small.x < 16 || small.y < 16) {
+    const bool moving = m.camera_moved(frame, width, height) || frame.camera_moving;
+    const float scale = m.moving_scale.scale();
+    const glm::ivec2 small{static_cast<int>(static_cast<float>(width) * scale),
+                           static_cast<int>(static_cast<float>(height) * scale)};
+    if (!moving || scale >= 1.0f || small.x < 16 || small.y < 16) {
         m.draw_passes(frame, width, height, moving);
         return;
     }
+    const auto start = std::chrono::steady_clock::now();
     // Drawn smaller, then scaled up into the caller's framebuffer.
     GLint target = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
@@ -595,6 +606,10 @@ void Renderer::draw(const FrameView& frame, int width, int height) {
     glViewport(0, 0, width, height);
     glBlitFramebuffer(0, 0, small.x, small.y, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_LINEAR);
     glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
+    glFinish();  // a software renderer draws at the flush: this is the frame's real cost
+    m.moving_scale.record(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+            .count());
 }
 
 // The passes of one frame into the bound framebuffer's (0, 0, width, height).

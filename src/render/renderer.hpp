@@ -76,6 +76,10 @@ struct FrameView {
     /// Ids of the pocketed object balls, in the order they dropped: drawn in the ball-return
     /// tray along the table's south side (outside the rails), numbers up.
     std::span<const int> tray;
+    /// The caller's word that the camera moves, or stopped only a moment ago and may move on
+    /// (aiming): drawn as a moving camera (smaller, no table cache) even when it equals the
+    /// last frame's, so that a pause between two mouse moves costs no full-quality frame.
+    bool camera_moving = false;
 };
 
 /// Quality switches (defaults: everything on).
@@ -92,6 +96,12 @@ struct RenderSettings {
     /// cache, and scaled up (bilinear) into the bound framebuffer's colour; a still camera is
     /// drawn at full size. 1: always full size.
     float moving_scale = 0.75f;
+    /// While moving frames take longer than moving_budget_ms to draw, their scale steps down
+    /// (by 1/16) to at most this; it steps back up toward moving_scale while they take well
+    /// under it (MovingScale). A moving frame ends with glFinish so that its cost is known.
+    /// Equal to moving_scale (or more): the scale stays fixed.
+    float moving_scale_lowest = 0.5f;
+    double moving_budget_ms = 22.0;  ///< (unit: ms) leaves a 30 fps frame room for the rest
     /// TrueType font the ball numbers are rasterized from at start-up; the Renderer's
     /// constructor throws std::runtime_error when it is missing.
     std::string number_font = kDefaultNumberFont;
@@ -115,6 +125,8 @@ class Renderer {
     /// Clears and draws a frame into the bound framebuffer's (0, 0, width, height) viewport.
     void draw(const FrameView& frame, int width, int height);
 
+    /// The scale the next moving frame is drawn at (RenderSettings::moving_scale_lowest).
+    float moving_scale() const;
     RenderSettings& settings();
 
   private:

@@ -636,7 +636,7 @@ void main() {
     // Light bounced off the bright table and the room's own dim fill.
     vec3 to_table = vec3(0.5 * (u_footprint.xy + u_footprint.zw), 0.0) - a_pos;
     float bounce = max(dot(a_normal, normalize(to_table)), 0.0) / (1.0 + dot(to_table, to_table));
-    vec3 light = u_lamp_colour * sum + vec3(0.6, 0.55, 0.45) * bounce + vec3(0.05);
+    vec3 light = u_lamp_colour * sum + vec3(0.6, 0.55, 0.45) * bounce + vec3(0.16, 0.15, 0.13);
     float fog = clamp((length(a_pos - u_eye) - 1.5) / 9.0, 0.0, 0.75);
     vec3 c = mix(pow(a_colour, vec3(2.2)) * light, u_background, fog) * u_exposure;
     c = clamp((c * (2.51 * c + 0.03)) / (c * (2.43 * c + 0.59) + 0.14), 0.0, 1.0);

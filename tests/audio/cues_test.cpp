@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "render_support.hpp"
 
 namespace audio {
@@ -19,10 +22,15 @@ bool audible_type(EventType t) {
 
 TEST(Cues, OnePerCollisionStrikeAndPocketAtItsTime) {
     const physics::Shot shot = test::scene_shot("cut");
-    const std::vector<Cue> cues = cues_for_shot(shot);
+    const std::vector<Cue> all = cues_for_shot(shot);
+    // The ball's run to the return is heard later; every other cue is an event's.
+    std::vector<Cue> cues;
+    for (const Cue& c : all)
+        if (c.kind != SoundKind::ball_return) cues.push_back(c);
     std::size_t audible = 0;
     for (const auto& e : shot.events()) audible += audible_type(e.type);
     ASSERT_EQ(cues.size(), audible);
+    ASSERT_EQ(all.size(), audible + 1);  // one ball potted
     const SoundKind want[] = {SoundKind::cue_strike, SoundKind::ball_click, SoundKind::pocket_drop,
                               SoundKind::cushion_thump};
     ASSERT_EQ(cues.size(), 4u);
@@ -36,6 +44,28 @@ TEST(Cues, OnePerCollisionStrikeAndPocketAtItsTime) {
     }
     // The pocket's speed is the ball's speed as it fell (its state after the event is at rest).
     EXPECT_GT(cues[2].speed, 0.1);
+    for (std::size_t i = 1; i < all.size(); ++i) EXPECT_LE(all[i - 1].time, all[i].time) << i;
+}
+
+TEST(Cues, APottedBallRunsToTheReturnAfterItsDrop) {
+    const physics::Shot shot = test::scene_shot("cut");
+    const CueOptions o;
+    const std::vector<Cue> cues = cues_for_shot(shot, o);
+    const auto drop = std::find_if(cues.begin(), cues.end(),
+                                   [](const Cue& c) { return c.kind == SoundKind::pocket_drop; });
+    const auto run = std::find_if(cues.begin(), cues.end(),
+                                  [](const Cue& c) { return c.kind == SoundKind::ball_return; });
+    ASSERT_NE(drop, cues.end());
+    ASSERT_NE(run, cues.end());
+    EXPECT_EQ(run->event, drop->event);
+    // The drop's own position to the return's, at the channel's speed, after the settling.
+    const double d =
+        std::hypot(o.ball_return.x - drop->position.x, o.ball_return.y - drop->position.y);
+    EXPECT_DOUBLE_EQ(run->time, drop->time + o.return_settle + d / o.return_speed);
+    EXPECT_GT(run->time - drop->time, 0.5);
+    EXPECT_LT(run->time - drop->time, 3.0);
+    EXPECT_EQ(run->position, o.ball_return);
+    EXPECT_EQ(run->gain, o.return_gain);
 }
 
 TEST(Cues, JawCushionEventsRattle) {

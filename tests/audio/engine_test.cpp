@@ -27,6 +27,35 @@ Cue cue_at(SoundKind kind, physics::Vec3 where, float gain = 0.5f) {
     return c;
 }
 
+/// The sounds made of several knocks (a drop rattling in the pocket, a run down the return):
+/// the onsets after their first, within their length, are theirs.
+double knocks_for(SoundKind kind) {
+    return kind == SoundKind::pocket_drop ? 0.5 : kind == SoundKind::ball_return ? 1.0 : 0.0;
+}
+
+/// Every cue has an onset within 5 ms of its time, and every onset is a cue's or one of the
+/// later knocks of a rattling sound.
+void expect_onsets_match(const std::vector<Cue>& cues, const std::vector<double>& got) {
+    const std::vector<double> want = expected_onsets(cues);
+    for (double w : want) {
+        const auto near = std::find_if(got.begin(), got.end(),
+                                       [&](double g) { return std::abs(g - w) <= 0.005; });
+        EXPECT_NE(near, got.end()) << "no onset at the cue at " << w << " s";
+        if (near != got.end())
+            std::printf("cue %.4f s  onset %.4f s  (%+.2f ms)\n", w, *near, 1e3 * (*near - w));
+    }
+    for (double g : got) {
+        const bool ok = std::any_of(cues.begin(), cues.end(), [&](const Cue& c) {
+            return std::abs(g - c.time) <= 0.005 || (g > c.time && g < c.time + knocks_for(c.kind));
+        });
+        EXPECT_TRUE(ok) << "an onset at " << g << " s belongs to no cue";
+    }
+}
+
+double last_cue_time(const Engine& e) {
+    return e.cues().empty() ? 0.0 : e.cues().back().time;
+}
+
 }  // namespace
 
 TEST(Engine, LoopbackOpens) {
@@ -38,33 +67,54 @@ TEST(Engine, CutShotHasOneOnsetPerEventWithin5ms) {
     const physics::Shot shot = scene_shot("cut");
     Engine e = Engine::loopback(kRate);
     ASSERT_TRUE(e.active());
-    const Stereo s = render_shot(e, shot, shot.events().back().time + 1.5);
+    e.start(shot);
+    const Stereo s = render_shot(e, shot, last_cue_time(e) + 1.2);
     const std::string wav = output_path("audio_cut_shot.wav");
     EXPECT_TRUE(write_wav(wav, s.samples, 2, kRate)) << wav;
     std::printf("rendered the cut shot to %s\n", wav.c_str());
 
-    // The cut: strike, ball–ball, the object ball drops, the cue ball meets a rail.
-    ASSERT_EQ(e.cues().size(), 4u);
-    const std::vector<double> want = expected_onsets(e.cues());
+    // The cut: strike, ball–ball, the object ball drops, the cue ball meets a rail, and the
+    // potted ball reaches the return.
+    ASSERT_EQ(e.cues().size(), 5u);
+    expect_onsets_match(e.cues(), onsets(s));
+}
+
+TEST(Engine, ThePocketSoundFollowsItsEventAndTheReturnComesAfter) {
+    const physics::Shot shot = scene_shot("cut");
+    Engine e = Engine::loopback(kRate);
+    e.start(shot);
+    const Stereo s = render_shot(e, shot, last_cue_time(e) + 1.2);
+    const auto& cues = e.cues();
+    const auto of = [&](SoundKind k) {
+        return std::find_if(cues.begin(), cues.end(), [k](const Cue& c) { return c.kind == k; });
+    };
+    ASSERT_NE(of(SoundKind::pocket_drop), cues.end());
+    ASSERT_NE(of(SoundKind::ball_return), cues.end());
+    const double drop = of(SoundKind::pocket_drop)->time, run = of(SoundKind::ball_return)->time;
     const std::vector<double> got = onsets(s);
-    ASSERT_EQ(got.size(), want.size());
-    for (std::size_t i = 0; i < want.size(); ++i) {
-        EXPECT_NEAR(got[i], want[i], 0.005) << "onset " << i;
-        std::printf("event %.4f s  onset %.4f s  (%+.2f ms)\n", want[i], got[i],
-                    1e3 * (got[i] - want[i]));
-    }
+    const auto onset_near = [&](double t) {
+        return std::any_of(got.begin(), got.end(),
+                           [t](double g) { return std::abs(g - t) < 0.005; });
+    };
+    EXPECT_TRUE(onset_near(drop));
+    EXPECT_TRUE(onset_near(run));
+    EXPECT_GT(run, drop + 0.5);
+    // Between the rattle's end and the run, only the cue ball's cushion and rumble: quieter
+    // than the run itself.
+    const float run_peak = peak_between(s, run, run + 0.8);
+    std::printf("drop at %.3f s (peak %.4f), return at %.3f s (peak %.4f)\n", drop,
+                peak_between(s, drop, drop + 0.5), run, run_peak);
+    EXPECT_GT(run_peak, 0.005f);
 }
 
 TEST(Engine, BankShotHasOneOnsetPerEventWithin5ms) {
     const physics::Shot shot = scene_shot("bank");
     Engine e = Engine::loopback(kRate);
     ASSERT_TRUE(e.active());
-    const Stereo s = render_shot(e, shot, shot.events().back().time + 1.5);
-    const std::vector<double> want = expected_onsets(e.cues());
-    const std::vector<double> got = onsets(s);
-    ASSERT_GE(want.size(), 4u);
-    ASSERT_EQ(got.size(), want.size());
-    for (std::size_t i = 0; i < want.size(); ++i) EXPECT_NEAR(got[i], want[i], 0.005) << i;
+    e.start(shot);
+    const Stereo s = render_shot(e, shot, last_cue_time(e) + 1.2);
+    ASSERT_GE(expected_onsets(e.cues()).size(), 4u);
+    expect_onsets_match(e.cues(), onsets(s));
 }
 
 TEST(Engine, FasterImpactIsLouder) {
@@ -156,7 +206,9 @@ TEST(Engine, MuteCutsASoundAtOnceAndUnmuteRestores) {
 
 TEST(Engine, UnmutingDoesNotReplayCuesThatFellDueWhileMuted) {
     const physics::Shot shot = scene_shot("cut");
-    Engine e = Engine::loopback(kRate);
+    EngineOptions o;
+    o.rolling.enabled = false;  // the cues only: a rolling ball is heard again, rightly
+    Engine e = Engine::loopback(kRate, o);
     e.start(shot);
     e.set_muted(true);
     e.update(1.0);  // strike, ball–ball and pocket fall due, muted
@@ -165,6 +217,42 @@ TEST(Engine, UnmutingDoesNotReplayCuesThatFellDueWhileMuted) {
     EXPECT_EQ(peak_between(render_for(e, 0.1), 0.0, 0.1), 0.0f);
     e.update(1.3);  // the cushion
     EXPECT_GT(peak_between(render_for(e, 0.1), 0.0, 0.1), 0.0f);
+}
+
+TEST(Engine, AfterThePlaybackEndsTheReturnStillComesUnlessTheShotWasSkipped) {
+    const physics::Shot shot = scene_shot("cut");
+    const double end = *shot.rest_time();
+    EngineOptions o;
+    o.cues.return_settle = 3.0;  // a long way round to the return: it comes after the end
+    Engine e = Engine::loopback(kRate, o);
+    e.start(shot);
+    const double run = last_cue_time(e);
+    ASSERT_EQ(e.cues().back().kind, SoundKind::ball_return);
+    ASSERT_GT(run, end) << "the return is heard after the balls stop";
+    Stereo s;
+    s.samples.assign(static_cast<std::size_t>((run + 0.5) * kRate) * 2, 0.0f);
+    // The playback's clock runs to its end, then the app's frames advance the sound's.
+    for (std::size_t f = 0; f < s.frames(); f += kChunk) {
+        const double t = double(f) / kRate;
+        if (t < end)
+            e.update(t);
+        else
+            e.advance(double(kChunk) / kRate);
+        e.render({s.samples.data() + 2 * f, 2 * std::min<std::size_t>(kChunk, s.frames() - f)});
+    }
+    EXPECT_FALSE(e.pending());
+    const std::vector<double> got = onsets(s);
+    EXPECT_TRUE(
+        std::any_of(got.begin(), got.end(), [&](double g) { return std::abs(g - run) < 0.005; }));
+
+    // Skipped to its end from 0.1 s: nothing more comes.
+    e.start(shot);
+    e.update(0.1);
+    EXPECT_TRUE(e.pending());
+    e.advance(0.03);
+    EXPECT_FALSE(e.pending());
+    render_for(e, 0.05);
+    EXPECT_EQ(peak_between(render_for(e, 0.5), 0.0, 0.5), 0.0f);
 }
 
 TEST(Engine, RendersAreDeterministic) {
@@ -199,7 +287,7 @@ TEST(Engine, NoDeviceRunsSilentWithOneLineOnStderr) {
     e.render(buffer);
     EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
     EXPECT_EQ(*std::max_element(buffer.begin(), buffer.end()), 0.0f);
-    EXPECT_EQ(e.cues().size(), 4u);  // the cues are still made: only the device is missing
+    EXPECT_EQ(e.cues().size(), 5u);  // the cues are still made: only the device is missing
 }
 
 }  // namespace audio::test
