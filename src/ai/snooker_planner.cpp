@@ -1,0 +1,200 @@
+// The snooker player's decision (games.hpp's plan_snooker): spots in the D, candidates, their
+// noiseless plays, the shortlist under noise, the best mean. docs/ai.md, "Snooker".
+#include <algorithm>
+#include <numeric>
+
+#include "ai/internal/ghost_ball.hpp"
+#include "ai/internal/level.hpp"
+#include "ai/internal/parallel.hpp"
+#include "ai/internal/snooker_search.hpp"
+
+namespace ai {
+
+namespace {
+
+namespace sb = physics::snooker_ball;
+using physics::Vec2;
+
+struct Search {
+    const SnookerPosition& pos;
+    SnookerEffort effort;
+    int workers;
+    double scale, sigma_deg;
+    SnookerEvaluator eval;
+    std::int64_t simulations = 0;
+};
+
+// Where the cue ball is played from: where it lies, or the best few spots of the D.
+std::vector<Vec2> cue_spots(Search& k) {
+    const rules::SnookerState& s = k.pos.state;
+    if (s.cue_ball == rules::CueBall::on_table && s.positions.count(sb::cue))
+        return {s.positions.at(sb::cue)};
+    std::vector<Vec2> spots = d_spots(k.pos, s);
+    std::vector<double> value(spots.size());
+    for (std::size_t i = 0; i < spots.size(); ++i) {
+        rules::SnookerState at = s;
+        at.positions[sb::cue] = spots[i];
+        at.cue_ball = rules::CueBall::on_table;
+        value[i] = table_value(k.pos, at, k.sigma_deg);
+    }
+    std::vector<std::size_t> order(spots.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return value[a] > value[b]; });
+    std::vector<Vec2> out;
+    for (std::size_t i = 0; i < order.size() && out.size() < std::size_t(k.effort.placements); ++i)
+        out.push_back(spots[order[i]]);
+    if (out.empty()) out.push_back(k.pos.snooker.marks.d_centre() - Vec2{0.05, 0.0});
+    return out;
+}
+
+// Plays every candidate once without noise, in parallel; returns their trials.
+std::vector<SnookerTrial> play_nominal(Search& k, std::vector<SnookerCandidate>& cands) {
+    std::vector<SnookerTrial> out(cands.size());
+    parallel_for(cands.size(), k.workers, [&](std::size_t i) { out[i] = k.eval.nominal(cands[i]); });
+    k.simulations += static_cast<std::int64_t>(cands.size());
+    return out;
+}
+
+struct Mean {
+    double value = 0.0, success = 0.0;
+    int n = 0;
+};
+
+// Adds the draws [first, first + count) to the means of the candidates `which`.
+void score(Search& k, const std::vector<SnookerCandidate>& cands,
+           const std::vector<std::size_t>& which, const std::vector<NoiseDraw>& draws,
+           std::size_t first, std::size_t count, std::vector<Mean>& means) {
+    std::vector<SnookerTrial> t(which.size() * count);
+    parallel_for(t.size(), k.workers, [&](std::size_t j) {
+        t[j] = k.eval.trial(cands[which[j / count]], draws[first + j % count]);
+    });
+    k.simulations += static_cast<std::int64_t>(t.size());
+    for (std::size_t j = 0; j < t.size(); ++j) {
+        Mean& m = means[which[j / count]];
+        const SnookerCandidate& c = cands[which[j / count]];
+        m.value += t[j].value;
+        m.success += c.kind == Kind::pot ? t[j].stays : !t[j].foul;
+        ++m.n;
+    }
+}
+
+// The indices of the `n` best by `key`, best first (ties: the earlier).
+template <typename Key>
+std::vector<std::size_t> best(std::size_t size, std::size_t n, const Key& key) {
+    std::vector<std::size_t> order(size);
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return key(a) > key(b); });
+    order.resize(std::min(n, size));
+    return order;
+}
+
+std::vector<SnookerCandidate> candidates(Search& k, const std::vector<Vec2>& spots) {
+    const bool in_hand = k.pos.state.cue_ball == rules::CueBall::in_hand;
+    std::vector<SnookerCandidate> out;
+    for (Vec2 cue : spots) {
+        std::vector<SnookerCandidate> pots =
+            snooker_pots(k.pos, cue, in_hand, k.effort, k.sigma_deg, k.simulations);
+        std::vector<SnookerCandidate> safe = snooker_safeties(k.pos, cue, in_hand, k.effort);
+        out.insert(out.end(), pots.begin(), pots.end());
+        out.insert(out.end(), safe.begin(), safe.end());
+    }
+    return out;
+}
+
+SnookerPlan to_plan(const SnookerCandidate& c, const Mean& m, std::int64_t simulations) {
+    SnookerPlan p;
+    p.stroke = c.stroke;
+    p.nominated = c.nominated;
+    p.cue_pos = c.cue_pos;
+    p.kind = c.kind;
+    p.expected_value = m.n ? m.value / m.n : 0.0;
+    p.expected_success = m.n ? m.success / m.n : 0.0;
+    p.simulations = simulations;
+    return p;
+}
+
+}  // namespace
+
+SnookerPosition snooker_position(const physics::Table& table, const physics::Params& params,
+                                 const rules::SnookerOptions& options,
+                                 const rules::SnookerState& state) {
+    return {options, {physics::snooker_markings(table), params.ball_radius}, table, params, state};
+}
+
+SnookerPlan plan_snooker(const SnookerPosition& pos, const PlanSettings& settings,
+                         std::uint64_t seed) {
+    const SnookerEffort effort = snooker_effort(settings.level);
+    const double scale = planned_scale(settings);
+    const double sigma_1x =
+        effort.model_sigma_deg > 0.0 ? effort.model_sigma_deg : heading_sigma_deg(pos.params);
+    const double sigma = sigma_1x * scale;
+    Search k{pos, effort, std::max(settings.workers, 1), scale, sigma, {pos, scale, sigma}};
+    const std::vector<Vec2> spots = cue_spots(k);
+    std::vector<SnookerCandidate> cands = candidates(k, spots);
+    std::vector<SnookerTrial> nominal = play_nominal(k, cands);
+    const bool all_foul = std::all_of(nominal.begin(), nominal.end(),
+                                      [](const SnookerTrial& t) { return t.foul; });
+    if (all_foul) {  // snookered, or nothing legal: the sweep for cushion paths
+        const bool in_hand = pos.state.cue_ball == rules::CueBall::in_hand;
+        std::vector<SnookerCandidate> esc = snooker_escapes(pos, spots.front(), in_hand, effort);
+        std::vector<SnookerTrial> t = play_nominal(k, esc);
+        cands.insert(cands.end(), esc.begin(), esc.end());
+        nominal.insert(nominal.end(), t.begin(), t.end());
+    }
+    if (cands.empty()) throw std::logic_error("plan_snooker: no candidate stroke");
+    std::vector<Mean> means(cands.size());
+    const auto nominal_value = [&](std::size_t i) { return nominal[i].value; };
+    if (scale == 0.0) {
+        const std::size_t b = best(cands.size(), 1, nominal_value).front();
+        return to_plan(cands[b], {nominal[b].value, double(nominal[b].stays || !nominal[b].foul), 1},
+                       k.simulations);
+    }
+    const std::size_t n = static_cast<std::size_t>(effort.samples);
+    const std::vector<NoiseDraw> draws = noise_draws(seed, static_cast<int>(2 * n));
+    const std::vector<std::size_t> list =
+        best(cands.size(), static_cast<std::size_t>(effort.shortlist), nominal_value);
+    score(k, cands, list, draws, 0, n, means);
+    const auto mean_value = [&](std::size_t i) {
+        return means[i].n ? means[i].value / means[i].n : -1e9;
+    };
+    const std::vector<std::size_t> finals =
+        best(cands.size(), static_cast<std::size_t>(effort.finalists), mean_value);
+    if (finals.size() > 1) score(k, cands, finals, draws, n, n, means);
+    const std::size_t b = best(cands.size(), 1, mean_value).front();
+    return to_plan(cands[b], means[b], k.simulations);
+}
+
+rules::SnookerState with_plan(rules::SnookerState s, const SnookerPlan& plan) {
+    if (plan.cue_pos) {
+        s.positions[sb::cue] = *plan.cue_pos;
+        s.cue_ball = rules::CueBall::on_table;
+    }
+    if (plan.nominated) s.nominated = plan.nominated;
+    return s;
+}
+
+rules::AfterFoul choose_after_foul(const SnookerPosition& pos, const rules::SnookerVerdict& v,
+                                   const rules::SnookerState& before,
+                                   const PlanSettings& settings) {
+    if (!v.may_ask_to_play_again) return rules::AfterFoul::play;
+    const SnookerEffort effort = snooker_effort(settings.level);
+    const double sigma =
+        (effort.model_sigma_deg > 0.0 ? effort.model_sigma_deg : heading_sigma_deg(pos.params)) *
+        planned_scale(settings);
+    // The chooser's value: his own table when he plays, less the offender's when he does not.
+    rules::AfterFoul choice = rules::AfterFoul::play;
+    double top = table_value(pos, v.state, sigma);
+    for (rules::AfterFoul c : {rules::AfterFoul::play_again, rules::AfterFoul::replace}) {
+        if (c == rules::AfterFoul::replace && !v.miss) continue;
+        const double value = -table_value(pos, rules::resolve_after_foul(v, before, c), sigma);
+        if (value > top) {
+            top = value;
+            choice = c;
+        }
+    }
+    return choice;
+}
+
+}  // namespace ai
