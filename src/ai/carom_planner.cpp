@@ -66,8 +66,8 @@ std::vector<physics::Stroke> sweep(const CaromPosition& pos, const rules::CaromS
             for (int i = 0; i < headings; ++i) {
                 physics::Stroke st;
                 st.ball = s.cue_ball(s.shooter);
-                st.speed = physics::cue_speed_for_ball_speed(pos.params,
-                                                             ball_speeds[std::size_t(k)]);
+                st.speed =
+                    physics::cue_speed_for_ball_speed(pos.params, ball_speeds[std::size_t(k)]);
                 st.side = spins[std::size_t(j)].side;
                 st.top = spins[std::size_t(j)].top;
                 st.heading_deg = 360.0 * i / headings;
@@ -79,7 +79,8 @@ std::vector<physics::Stroke> sweep(const CaromPosition& pos, const rules::CaromS
 std::vector<Outcome> play_all(const CaromPosition& pos, const rules::CaromState& s,
                               const std::vector<physics::Stroke>& strokes, int workers) {
     std::vector<Outcome> out(strokes.size());
-    parallel_for(strokes.size(), workers, [&](std::size_t i) { out[i] = play(pos, s, strokes[i]); });
+    parallel_for(strokes.size(), workers,
+                 [&](std::size_t i) { out[i] = play(pos, s, strokes[i]); });
     return out;
 }
 
@@ -94,7 +95,9 @@ std::vector<Run> scoring_runs(const std::vector<physics::Stroke>& strokes,
     std::vector<Run> runs;
     const int h = headings;
     for (std::size_t row = 0; row < strokes.size() / std::size_t(h); ++row) {
-        const auto at = [&](int i) { return o[row * std::size_t(h) + std::size_t((i % h + h) % h)]; };
+        const auto at = [&](int i) {
+            return o[row * std::size_t(h) + std::size_t((i % h + h) % h)];
+        };
         int start = 0;  // a heading that does not score, so that no run is cut at the wrap
         while (start < h && at(start).point) ++start;
         if (start == h) start = 0;
@@ -191,8 +194,9 @@ CaromPlan plan_three_cushion(const CaromPosition& pos, const PlanSettings& setti
         });
         plan.simulations += std::int64_t(pt.size());
         for (std::size_t r = 0; r < runs.size(); ++r)
-            rate[r] = std::accumulate(pt.begin() + long(r * n), pt.begin() + long((r + 1) * n), 0.0) /
-                      double(n);
+            rate[r] =
+                std::accumulate(pt.begin() + long(r * n), pt.begin() + long((r + 1) * n), 0.0) /
+                double(n);
     }
     std::vector<double> value = rate;
     std::vector<std::size_t> order(runs.size());

@@ -1,7 +1,7 @@
+#include "ai/internal/game_levels.hpp"
+
 #include <algorithm>
 #include <array>
-
-#include "ai/internal/game_levels.hpp"
 
 namespace ai {
 
@@ -13,8 +13,8 @@ constexpr std::array<SnookerEffort, 5> snooker_levels{{
     {3,  2, 1, 1,  3, 3, 2,  24, 1,  4,  4, 1, 0.0},
     {5,  3, 2, 2,  4, 4, 2,  36, 2,  6,  6, 2, 0.0},
     {7,  3, 3, 2,  5, 5, 3,  48, 3,  8,  8, 3, 0.0},
-    {9,  4, 4, 3,  6, 6, 3,  72, 4, 12, 12, 4, 0.0},
-    {12, 5, 5, 3,  8, 7, 3, 120, 5, 16, 16, 5, 0.14},
+    {10, 4, 5, 3,  6, 7, 3,  72, 4, 16, 16, 4, 0.0},
+    {16, 5, 7, 3,  8, 9, 3, 120, 6, 32, 32, 8, 0.14},
 }};
 constexpr std::array<CaromEffort, 5> carom_levels{{
     // headings speeds spins | list centring draws | leave checked, headings

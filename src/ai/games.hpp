@@ -41,9 +41,9 @@ struct SnookerPlan {
     std::optional<int> nominated;
     std::optional<physics::Vec2> cue_pos;  ///< where the cue ball in hand goes (in the D)
     Kind kind = Kind::pot;                 ///< pot, safety or kick (an escape from a snooker)
-    double expected_success = 0.0;  ///< pots: chance to stay at the table; else of no foul
-    double expected_value = 0.0;    ///< the planner's value: points ahead, this visit and next
-    std::int64_t simulations = 0;   ///< physics simulations run for this decision
+    double expected_success = 0.0;         ///< pots: chance to stay at the table; else of no foul
+    double expected_value = 0.0;   ///< the planner's value: points ahead, this visit and next
+    std::int64_t simulations = 0;  ///< physics simulations run for this decision
 };
 
 /// The AI's stroke in `pos`. The same position, settings and seed give the same plan, bit for

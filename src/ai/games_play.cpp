@@ -48,16 +48,15 @@ SnookerTurn snooker_turn(const SnookerFrameSetup& setup, const std::array<Seat, 
     t.record.seconds = seconds_since(start);
     t.record.before = with_plan(s, t.record.plan);
     t.record.executed = game::with_noise(t.record.plan.stroke, planned_scale(settings), rng);
-    const physics::Shot shot = physics::simulate(
-        table, params, balls_of(t.record.before.positions), &t.record.executed);
+    const physics::Shot shot =
+        physics::simulate(table, params, balls_of(t.record.before.positions), &t.record.executed);
     t.record.verdict =
         rules::judge_snooker(setup.options, pos.snooker, t.record.before, shot.events());
     t.next = t.record.verdict.state;
     if (t.record.verdict.may_ask_to_play_again && !t.record.verdict.frame_over) {
         const std::size_t them = 1 - me;
         const PlanSettings theirs{seats[them].level, setup.noise, setup.workers};
-        t.record.after_foul =
-            choose_after_foul(pos, t.record.verdict, t.record.before, theirs);
+        t.record.after_foul = choose_after_foul(pos, t.record.verdict, t.record.before, theirs);
         t.next = rules::resolve_after_foul(t.record.verdict, t.record.before, *t.record.after_foul);
     }
     if (!t.next.free_ball) t.next.nominated.reset();
@@ -134,9 +133,10 @@ CaromGameReport play_three_cushion_game(const CaromGameSetup& setup,
                                     decision_seed(seats[me].seed, decisions[me]++));
         r.seconds = seconds_since(start);
         r.executed = game::with_noise(r.plan.stroke, planned_scale(settings), rng);
-        const physics::Shot shot = physics::simulate(table, params, balls_of(s.positions), &r.executed);
-        r.verdict = rules::judge_three_cushion(setup.options, spots, params.ball_radius, s,
-                                               shot.events());
+        const physics::Shot shot =
+            physics::simulate(table, params, balls_of(s.positions), &r.executed);
+        r.verdict =
+            rules::judge_three_cushion(setup.options, spots, params.ball_radius, s, shot.events());
         ++report.strokes;
         report.fouls += r.verdict.foul;
         report.decision_seconds[me].push_back(r.seconds);

@@ -22,8 +22,8 @@ struct Seat {
 
 struct SnookerFrameSetup {
     rules::SnookerOptions options;
-    int reds = 15;         ///< reds racked (1–15; fewer: the front rows of the triangle)
-    double noise = 1.0;    ///< the game's execution-noise scale (each level's multiplier on top)
+    int reds = 15;           ///< reds racked (1–15; fewer: the front rows of the triangle)
+    double noise = 1.0;      ///< the game's execution-noise scale (each level's multiplier on top)
     int max_strokes = 1500;  ///< a frame still on after this many strokes is capped
     int workers = 2;
 };
@@ -53,9 +53,9 @@ rules::SnookerState snooker_start(const physics::Table& table, const physics::Pa
                                   int reds);
 
 /// Plays one frame, seat A breaking off; `noise_seed` seeds the execution noise.
-SnookerFrameReport play_snooker_frame(const SnookerFrameSetup& setup,
-                                      const std::array<Seat, 2>& seats, std::uint64_t noise_seed,
-                                      const std::function<void(const SnookerStroke&)>& observe = {});
+SnookerFrameReport play_snooker_frame(
+    const SnookerFrameSetup& setup, const std::array<Seat, 2>& seats, std::uint64_t noise_seed,
+    const std::function<void(const SnookerStroke&)>& observe = {});
 
 struct CaromGameSetup {
     rules::CaromOptions options;
@@ -83,8 +83,8 @@ struct CaromGameReport {
 };
 
 /// Plays one game from the UMB starting position, seat A opening with the white.
-CaromGameReport play_three_cushion_game(const CaromGameSetup& setup,
-                                        const std::array<Seat, 2>& seats, std::uint64_t noise_seed,
-                                        const std::function<void(const CaromStroke&)>& observe = {});
+CaromGameReport play_three_cushion_game(
+    const CaromGameSetup& setup, const std::array<Seat, 2>& seats, std::uint64_t noise_seed,
+    const std::function<void(const CaromStroke&)>& observe = {});
 
 }  // namespace ai

@@ -25,7 +25,7 @@ constexpr std::array<Spin, 7> spins{
 constexpr std::array<double, 5> pot_speed_factors{1.3, 2.1, 1.0, 3.2, 1.65};
 constexpr std::array<double, 3> safety_speeds{0.9, 1.8, 3.2};  // (unit: m/s)
 constexpr std::array<double, 3> escape_speeds{1.8, 3.0, 4.5};  // (unit: m/s)
-constexpr double min_speed = 0.25, max_speed = 9.0;           // (unit: m/s)
+constexpr double min_speed = 0.25, max_speed = 9.0;            // (unit: m/s)
 constexpr double arrival_speed = 0.3;  // object ball speed wanted at the pocket (unit: m/s)
 constexpr int pockets = 6;
 

@@ -51,7 +51,8 @@ std::vector<Vec2> cue_spots(Search& k) {
 // Plays every candidate once without noise, in parallel; returns their trials.
 std::vector<SnookerTrial> play_nominal(Search& k, std::vector<SnookerCandidate>& cands) {
     std::vector<SnookerTrial> out(cands.size());
-    parallel_for(cands.size(), k.workers, [&](std::size_t i) { out[i] = k.eval.nominal(cands[i]); });
+    parallel_for(cands.size(), k.workers,
+                 [&](std::size_t i) { out[i] = k.eval.nominal(cands[i]); });
     k.simulations += static_cast<std::int64_t>(cands.size());
     return out;
 }
@@ -134,8 +135,8 @@ SnookerPlan plan_snooker(const SnookerPosition& pos, const PlanSettings& setting
     const std::vector<Vec2> spots = cue_spots(k);
     std::vector<SnookerCandidate> cands = candidates(k, spots);
     std::vector<SnookerTrial> nominal = play_nominal(k, cands);
-    const bool all_foul = std::all_of(nominal.begin(), nominal.end(),
-                                      [](const SnookerTrial& t) { return t.foul; });
+    const bool all_foul =
+        std::all_of(nominal.begin(), nominal.end(), [](const SnookerTrial& t) { return t.foul; });
     if (all_foul) {  // snookered, or nothing legal: the sweep for cushion paths
         const bool in_hand = pos.state.cue_ball == rules::CueBall::in_hand;
         std::vector<SnookerCandidate> esc = snooker_escapes(pos, spots.front(), in_hand, effort);
@@ -148,7 +149,8 @@ SnookerPlan plan_snooker(const SnookerPosition& pos, const PlanSettings& setting
     const auto nominal_value = [&](std::size_t i) { return nominal[i].value; };
     if (scale == 0.0) {
         const std::size_t b = best(cands.size(), 1, nominal_value).front();
-        return to_plan(cands[b], {nominal[b].value, double(nominal[b].stays || !nominal[b].foul), 1},
+        return to_plan(cands[b],
+                       {nominal[b].value, double(nominal[b].stays || !nominal[b].foul), 1},
                        k.simulations);
     }
     const std::size_t n = static_cast<std::size_t>(effort.samples);

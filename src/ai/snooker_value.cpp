@@ -1,4 +1,5 @@
-// What a snooker table is worth to the player at it, and the balls he may play (snooker_search.hpp).
+// What a snooker table is worth to the player at it, and the balls he may play
+// (snooker_search.hpp).
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -13,14 +14,14 @@ namespace {
 namespace sb = physics::snooker_ball;
 using physics::Vec2;
 
-constexpr double go_on_value = 2.0;      // what a pot leaves to go on with (unit: points)
+constexpr double go_on_value = 2.0;       // what a pot leaves to go on with (unit: points)
 constexpr double snookered_value = -2.0;  // a snookered player's expectation (unit: points)
 constexpr int pockets = 6;
-constexpr double near_value = 0.5;   // a cue ball on a ball on (unit: points)
-constexpr double near_reach = 1.5;   // … falling to 0 at this distance (unit: m)
-constexpr double tight_gap = 0.02;   // a cue ball this close to a cushion is tight (unit: m)
-constexpr double tight_cost = 0.4;   // (unit: points)
-constexpr int d_value_spots = 12;  // spots of the D valued for a ball in hand
+constexpr double near_value = 0.5;  // a cue ball on a ball on (unit: points)
+constexpr double near_reach = 1.5;  // … falling to 0 at this distance (unit: m)
+constexpr double tight_gap = 0.02;  // a cue ball this close to a cushion is tight (unit: m)
+constexpr double tight_cost = 0.4;  // (unit: points)
+constexpr int d_value_spots = 12;   // spots of the D valued for a ball in hand
 
 int lowest_colour(const rules::SnookerState& s) {
     for (int c = sb::yellow; c <= sb::black; ++c)
@@ -30,7 +31,8 @@ int lowest_colour(const rules::SnookerState& s) {
 
 // The points a pot of `ball` scores in `s`.
 int pot_points(const rules::SnookerState& s, int ball) {
-    if (s.free_ball && !s.colour_on) return s.reds() > 0 ? 1 : physics::snooker_value(lowest_colour(s));
+    if (s.free_ball && !s.colour_on)
+        return s.reds() > 0 ? 1 : physics::snooker_value(lowest_colour(s));
     return physics::snooker_value(ball);
 }
 
@@ -58,8 +60,8 @@ double value_from(const SnookerPosition& pos, const rules::SnookerState& s, Vec2
         if (it == balls.end()) continue;
         for (int pocket = 0; pocket < pockets; ++pocket)
             if (std::optional<Aim> a = direct_aim(pos.table, R, cue, ball, pocket, balls))
-                best = std::max(best, aim_chance(*a, R, sigma_deg) *
-                                          (pot_points(s, ball) + go_on_value));
+                best = std::max(best,
+                                aim_chance(*a, R, sigma_deg) * (pot_points(s, ball) + go_on_value));
     }
     if (best <= 0.0 && !ball_in_view(s, cue, R)) return snookered_value;
     return best + lie_value(pos, s, balls, cue);
@@ -104,10 +106,10 @@ bool needs_nomination(const rules::SnookerState& s) {
 std::vector<int> snooker_targets(const rules::SnookerState& s) {
     std::vector<int> out;
     for (int id : s.on_table) {
-        const bool on = s.free_ball                ? true
-                        : s.colour_on              ? physics::is_colour(id)
-                        : s.reds() > 0             ? physics::is_red(id)
-                                                   : id == lowest_colour(s);
+        const bool on = s.free_ball    ? true
+                        : s.colour_on  ? physics::is_colour(id)
+                        : s.reds() > 0 ? physics::is_red(id)
+                                       : id == lowest_colour(s);
         if (on) out.push_back(id);
     }
     return out;
@@ -144,8 +146,8 @@ std::vector<Vec2> d_spots(const SnookerPosition& pos, const rules::SnookerState&
     for (double r : {0.97, 0.55}) {
         for (int i = 0; i <= 8; ++i) {
             const double a = std::numbers::pi * (0.5 + i / 8.0);
-            const Vec2 p = m.d_centre() + Vec2{r * m.d_radius * std::cos(a) - 1e-4,
-                                               r * m.d_radius * std::sin(a)};
+            const Vec2 p = m.d_centre() +
+                           Vec2{r * m.d_radius * std::cos(a) - 1e-4, r * m.d_radius * std::sin(a)};
             if (p.x < R || !m.in_d(p)) continue;
             const bool clear = std::all_of(balls.begin(), balls.end(), [&](const auto& b) {
                 return physics::norm(b.second - p) > 2.0 * R + 1e-3;

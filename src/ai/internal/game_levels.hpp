@@ -31,7 +31,7 @@ struct CaromEffort {
     /// The shortlist's strokes moved to the middle of their window of scoring headings, found
     /// on a sweep this many times finer around each; 0: the sweep's run's middle.
     int centring = 0;
-    int samples = 0;    ///< noise draws per shortlisted stroke
+    int samples = 0;  ///< noise draws per shortlisted stroke
     /// The best few by their chance under noise valued by the position they leave (a coarse
     /// sweep from where the balls stop after the noiseless point); 0: not valued.
     int leave_checked = 0;
