@@ -61,12 +61,18 @@ Args read_args(int argc, char** argv) {
     if (a.game != "snooker" && a.game != "three_cushion") usage("snooker or three_cushion");
     for (int i = 2; i + 1 < argc; i += 2) {
         const std::string k = argv[i], v = argv[i + 1];
-        if (k == "--pairs") a.pairs = read_pairs(v);
-        else if (k == "--games") a.games = std::atoi(v.c_str());
-        else if (k == "--reds") a.reds = std::atoi(v.c_str());
-        else if (k == "--target") a.target = std::atoi(v.c_str());
-        else if (k == "--seed") a.seed = std::strtoull(v.c_str(), nullptr, 10);
-        else usage(("unknown flag " + k).c_str());
+        if (k == "--pairs")
+            a.pairs = read_pairs(v);
+        else if (k == "--games")
+            a.games = std::atoi(v.c_str());
+        else if (k == "--reds")
+            a.reds = std::atoi(v.c_str());
+        else if (k == "--target")
+            a.target = std::atoi(v.c_str());
+        else if (k == "--seed")
+            a.seed = std::strtoull(v.c_str(), nullptr, 10);
+        else
+            usage(("unknown flag " + k).c_str());
     }
     if (a.games < 2 || a.games % 2) usage("--games: an even number, at least 2");
     if (a.reds < 1 || a.reds > 15) usage("--reds: 1 to 15");
@@ -148,29 +154,32 @@ void play_pair(const Args& a, int hi, int lo) {
                 d.high_run = std::max(d.high_run, r.high_run[s]);
             }
         }
-        if (winner) side[who[rules::index(*winner)]].wins += 1;
-        else ++draws;
+        if (winner)
+            side[who[rules::index(*winner)]].wins += 1;
+        else
+            ++draws;
         for (int s = 0; s < 2; ++s)
             side[who[s]].seconds.insert(side[who[s]].seconds.end(), secs[s].begin(), secs[s].end());
         std::fprintf(stderr, "%d:%d game %d/%d\n", hi, lo, k + 1, a.games);
     }
     const auto [low, high] = wilson(side[0].wins + 0.5 * draws, a.games);
-    std::printf("{\"game\": \"%s\", \"pair\": \"%d:%d\", \"games\": %d, \"reds\": %d, \"target\": %d, "
-                "\"wins\": [%g, %g], \"draws\": %d, \"capped\": %d, \"first_share\": %.3f, "
-                "\"first_share_95\": [%.3f, %.3f], \"strokes_per_game\": %.1f",
-                a.game.c_str(), hi, lo, a.games, a.reds, a.target, side[0].wins, side[1].wins,
-                draws, capped, (side[0].wins + 0.5 * draws) / a.games, low, high,
-                double(strokes) / a.games);
+    std::printf(
+        "{\"game\": \"%s\", \"pair\": \"%d:%d\", \"games\": %d, \"reds\": %d, \"target\": %d, "
+        "\"wins\": [%g, %g], \"draws\": %d, \"capped\": %d, \"first_share\": %.3f, "
+        "\"first_share_95\": [%.3f, %.3f], \"strokes_per_game\": %.1f",
+        a.game.c_str(), hi, lo, a.games, a.reds, a.target, side[0].wins, side[1].wins, draws,
+        capped, (side[0].wins + 0.5 * draws) / a.games, low, high, double(strokes) / a.games);
     for (int s = 0; s < 2; ++s) {
         const Side& d = side[s];
         std::printf(", \"level%d_%s\": {", s == 0 ? hi : lo, s == 0 ? "first" : "second");
         if (a.game == "snooker") {
             const double sum = std::accumulate(d.breaks.begin(), d.breaks.end(), 0.0);
-            std::printf("\"points_per_frame\": %.2f, \"scoring_visits\": %zu, \"mean_break\": %.2f, "
-                        "\"highest_break\": %d, ",
-                        double(d.points) / a.games, d.breaks.size(),
-                        d.breaks.empty() ? 0.0 : sum / double(d.breaks.size()),
-                        d.breaks.empty() ? 0 : *std::max_element(d.breaks.begin(), d.breaks.end()));
+            std::printf(
+                "\"points_per_frame\": %.2f, \"scoring_visits\": %zu, \"mean_break\": %.2f, "
+                "\"highest_break\": %d, ",
+                double(d.points) / a.games, d.breaks.size(),
+                d.breaks.empty() ? 0.0 : sum / double(d.breaks.size()),
+                d.breaks.empty() ? 0 : *std::max_element(d.breaks.begin(), d.breaks.end()));
         } else {
             std::printf("\"points\": %ld, \"innings\": %ld, \"average\": %.3f, \"high_run\": %d, ",
                         d.points, d.innings, d.innings ? double(d.points) / double(d.innings) : 0.0,

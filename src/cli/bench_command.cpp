@@ -42,7 +42,7 @@ std::string machine() {
 physics::Stroke three_cushion_stroke(const physics::Params& params) {
     physics::Stroke s;
     s.speed = physics::cue_speed_for_ball_speed(params, 2.8);
-    s.heading_deg = 0.0;
+    s.heading_deg = 176.0;
     s.side = 0.4;
     s.top = 0.2;
     return s;
@@ -75,8 +75,8 @@ std::vector<BenchScene> game_scenes() {
     }
     {
         // "three_cushion": the UMB opening position and a stroke that scores from it (the
-        // level-5 player's choice at noise 0, tests/cli/bench_test.cpp checks the point): the
-        // white off the red, three cushions and more, onto the yellow.
+        // level-5 player's choice at noise 0): the white off the bottom cushion onto the red,
+        // round the table onto the yellow.
         BenchScene c{"three_cushion", *physics::params_preset("carom"), {}};
         c.scene.name = c.name;
         c.scene.table = physics::carom_table_spec();

@@ -34,15 +34,19 @@ std::uint64_t read_decide_seed(const JsonIn& in) {
 
 std::string_view kind_name(ai::Kind k) {
     switch (k) {
-        case ai::Kind::pot: return "pot";
-        case ai::Kind::safety: return "safety";
-        case ai::Kind::kick: return "kick";
-        default: return "other";
+        case ai::Kind::pot:
+            return "pot";
+        case ai::Kind::safety:
+            return "safety";
+        case ai::Kind::kick:
+            return "kick";
+        default:
+            return "other";
     }
 }
 
 std::string_view after_foul_name(rules::AfterFoul c) {
-    return c == rules::AfterFoul::play ? "play"
+    return c == rules::AfterFoul::play         ? "play"
            : c == rules::AfterFoul::play_again ? "play_again"
                                                : "replace";
 }
@@ -56,8 +60,9 @@ void require_snooker_positions(const JsonIn& state, const rules::SnookerState& s
                                              "every ball's position, e.g. \"{}\": [1.9, 0.6]",
                                              id, id));
     if (s.cue_ball == rules::CueBall::on_table && !s.positions.count(0))
-        throw BadInput(path, "the cue ball is on the table (cue_ball \"on_table\"): give its "
-                             "position as \"0\": [x, y]");
+        throw BadInput(path,
+                       "the cue ball is on the table (cue_ball \"on_table\"): give its "
+                       "position as \"0\": [x, y]");
 }
 
 // The choice after a foul: "state" is the verdict's (the incoming player to play), "after_foul"
@@ -74,8 +79,9 @@ ordered_json after_foul_document(const JsonIn& in, const ai::SnookerPosition& po
     if (auto m = a.find("misses")) v.misses = static_cast<int>(m->integer_in(0, 2));
     const rules::SnookerState before = read_snooker_state(a.at("before"), pos.table, pos.params);
     if (before.shooter == pos.state.shooter)
-        a.at("before").at("shooter").fail("the state before the foul is the offender's: the "
-                                          "other player than \"state\"'s shooter");
+        a.at("before").at("shooter").fail(
+            "the state before the foul is the offender's: the "
+            "other player than \"state\"'s shooter");
     const rules::AfterFoul c = ai::choose_after_foul(pos, v, before, settings);
     ordered_json out;
     out["after_foul"] = std::string(after_foul_name(c));

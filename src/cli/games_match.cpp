@@ -82,18 +82,18 @@ void add_snooker(const MatchOptions& o, const Seating& s, std::int64_t k, std::o
                 log_line(k, ++n, s.keys[rules::index(x.before.shooter)],
                          snooker_state_json(x.before), x.executed, snooker_verdict_json(x.verdict));
             line["plan"] = {
-                {"kind", x.plan.kind == ai::Kind::pot ? "pot"
+                {"kind", x.plan.kind == ai::Kind::pot      ? "pot"
                          : x.plan.kind == ai::Kind::safety ? "safety"
                                                            : "kick"},
                 {"nominated", x.plan.nominated ? ordered_json(*x.plan.nominated) : ordered_json()},
                 {"expected_success", x.plan.expected_success},
                 {"expected_value", x.plan.expected_value}};
             line["after_foul"] =
-                x.after_foul ? ordered_json(x.after_foul == rules::AfterFoul::play ? "play"
-                                            : x.after_foul == rules::AfterFoul::play_again
-                                                ? "play_again"
-                                                : "replace")
-                             : ordered_json(nullptr);
+                x.after_foul
+                    ? ordered_json(x.after_foul == rules::AfterFoul::play         ? "play"
+                                   : x.after_foul == rules::AfterFoul::play_again ? "play_again"
+                                                                                  : "replace")
+                    : ordered_json(nullptr);
             log << write_document(line, false);
         });
     strokes += r.strokes;
@@ -119,9 +119,9 @@ void add_carom(const MatchOptions& o, const Seating& s, std::int64_t k, std::ofs
     const ai::CaromGameReport r =
         ai::play_three_cushion_game(setup, s.seats, s.noise_seed, [&](const ai::CaromStroke& x) {
             if (!log.is_open()) return;
-            ordered_json line = log_line(k, ++n, s.keys[rules::index(x.before.shooter)],
-                                         carom_state_json(x.before), x.executed,
-                                         carom_verdict_json(x.verdict));
+            ordered_json line =
+                log_line(k, ++n, s.keys[rules::index(x.before.shooter)], carom_state_json(x.before),
+                         x.executed, carom_verdict_json(x.verdict));
             line["plan"] = {{"expected_success", x.plan.expected_success},
                             {"expected_value", x.plan.expected_value}};
             log << write_document(line, false);
@@ -148,18 +148,18 @@ ordered_json figures_json(bool snooker, Figures& g) {
         const double sum = std::accumulate(g.breaks.begin(), g.breaks.end(), 0.0);
         j["breaks"] = g.breaks.size();
         j["mean_break"] = g.breaks.empty() ? 0.0 : sum / static_cast<double>(g.breaks.size());
-        j["highest_break"] = g.breaks.empty() ? 0 : *std::max_element(g.breaks.begin(), g.breaks.end());
+        j["highest_break"] =
+            g.breaks.empty() ? 0 : *std::max_element(g.breaks.begin(), g.breaks.end());
     } else {
         j["innings"] = g.innings;
-        j["average"] = g.innings ? static_cast<double>(g.points) / static_cast<double>(g.innings)
-                                 : 0.0;
+        j["average"] =
+            g.innings ? static_cast<double>(g.points) / static_cast<double>(g.innings) : 0.0;
         j["high_run"] = g.high_run;
     }
     std::sort(g.seconds.begin(), g.seconds.end());
-    j["decision_seconds"] = g.seconds.empty()
-                                ? ordered_json{{"median", nullptr}, {"p95", nullptr}}
-                                : ordered_json{{"median", quantile(g.seconds, 0.5)},
-                                               {"p95", quantile(g.seconds, 0.95)}};
+    j["decision_seconds"] = g.seconds.empty() ? ordered_json{{"median", nullptr}, {"p95", nullptr}}
+                                              : ordered_json{{"median", quantile(g.seconds, 0.5)},
+                                                             {"p95", quantile(g.seconds, 0.95)}};
     return j;
 }
 

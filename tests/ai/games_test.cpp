@@ -2,12 +2,13 @@
 // easy red potted and a colour nominated, an easy three-cushion point, the choice after a foul,
 // and whole frames and games between computer players that reach their end with consistent
 // scores.
+#include "ai/games.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstring>
 #include <numeric>
 
-#include "ai/games.hpp"
 #include "ai/games_play.hpp"
 #include "physics/layout.hpp"
 #include "physics/markings.hpp"
@@ -87,8 +88,8 @@ TEST(SnookerPlayer, SameSeedSamePlanWhateverTheThreads) {
     ASSERT_TRUE(a.cue_pos);
     EXPECT_TRUE(pos.snooker.marks.in_d(*a.cue_pos));
     EXPECT_TRUE(legal_stroke(a.stroke, t.params));
-    EXPECT_FALSE(physics::validate_layout(t.table, t.params,
-                                          layout(with_plan(pos.state, a).positions)));
+    EXPECT_FALSE(
+        physics::validate_layout(t.table, t.params, layout(with_plan(pos.state, a).positions)));
 }
 
 TEST(SnookerPlayer, Level5PotsAnEasyRedThenNominatesAColour) {
@@ -136,8 +137,10 @@ TEST(SnookerPlayer, AfterAFoulChoosesAnOpenOption) {
     physics::Stroke away;
     away.speed = 1.0;
     away.heading_deg = 180.0 + 45.0;
-    const physics::Shot shot = physics::simulate(t.table, t.params, layout(before.positions), &away);
-    const rules::SnookerVerdict v = rules::judge_snooker(pos.options, pos.snooker, before, shot.events());
+    const physics::Shot shot =
+        physics::simulate(t.table, t.params, layout(before.positions), &away);
+    const rules::SnookerVerdict v =
+        rules::judge_snooker(pos.options, pos.snooker, before, shot.events());
     ASSERT_TRUE(v.foul);
     ASSERT_TRUE(v.may_ask_to_play_again);
     const rules::AfterFoul c = choose_after_foul(pos, v, before, {5, 1.0, 2});
@@ -170,7 +173,8 @@ TEST(ThreeCushionPlayer, ScoresTheOpeningAndIsReproducible) {
     const physics::Params params = *physics::params_preset("carom");
     const physics::Table table = physics::build_table(physics::carom_table_spec());
     CaromPosition pos{{}, table, params, {}};
-    for (const physics::BallState& b : physics::carom_rack(table)) pos.state.positions[b.id] = b.pos;
+    for (const physics::BallState& b : physics::carom_rack(table))
+        pos.state.positions[b.id] = b.pos;
     const CaromPlan a = plan_three_cushion(pos, {5, 1.0, 2}, 11);
     const CaromPlan b = plan_three_cushion(pos, {5, 1.0, 1}, 11);
     EXPECT_TRUE(same_stroke(a.stroke, b.stroke));
@@ -178,7 +182,8 @@ TEST(ThreeCushionPlayer, ScoresTheOpeningAndIsReproducible) {
     EXPECT_EQ(a.stroke.ball, physics::carom_ball::white);
     EXPECT_TRUE(legal_stroke(a.stroke, params));
     EXPECT_GT(a.expected_success, 0.3);
-    const physics::Shot shot = physics::simulate(table, params, layout(pos.state.positions), &a.stroke);
+    const physics::Shot shot =
+        physics::simulate(table, params, layout(pos.state.positions), &a.stroke);
     const rules::CaromVerdict v = rules::judge_three_cushion(
         pos.options, physics::carom_spots(table), params.ball_radius, pos.state, shot.events());
     EXPECT_TRUE(v.point);
