@@ -157,6 +157,51 @@ void centre_runs(const CaromPosition& pos, std::vector<Run>& runs, int headings,
     }
 }
 
+// Each run's chance of a point under the level's noise (1 without noise): the same draws for
+// every run.
+std::vector<double> point_rates(const CaromPosition& pos, const std::vector<Run>& runs,
+                                const CaromEffort& effort, double scale, std::uint64_t seed,
+                                int workers, std::int64_t& simulations) {
+    std::vector<double> rate(runs.size(), 1.0);
+    if (scale == 0.0) return rate;
+    const std::size_t n = std::size_t(effort.samples);
+    const std::vector<NoiseDraw> draws = noise_draws(seed, int(n));
+    std::vector<char> pt(runs.size() * n);
+    parallel_for(pt.size(), workers, [&](std::size_t j) {
+        pt[j] = play(pos, pos.state, with_draw(runs[j / n].stroke, draws[j % n], scale)).point;
+    });
+    simulations += std::int64_t(pt.size());
+    for (std::size_t r = 0; r < runs.size(); ++r)
+        rate[r] = std::accumulate(pt.begin() + long(r * n), pt.begin() + long((r + 1) * n), 0.0) /
+                  double(n);
+    return rate;
+}
+
+// The runs' values: the chance of a point, raised for the likeliest few by the position the
+// noiseless point leaves (the share of a coarse sweep from there that scores, a quarter
+// counting in full).
+std::vector<double> with_leaves(const CaromPosition& pos, const std::vector<Run>& runs,
+                                const std::vector<double>& rate, const CaromEffort& effort,
+                                int workers, std::int64_t& simulations) {
+    std::vector<double> value = rate;
+    std::vector<std::size_t> order(runs.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return rate[a] > rate[b]; });
+    for (std::size_t k = 0; k < std::min(order.size(), std::size_t(effort.leave_checked)); ++k) {
+        const std::size_t r = order[k];
+        const Outcome o = play(pos, pos.state, runs[r].stroke);
+        if (!o.point) continue;
+        const std::vector<physics::Stroke> next = sweep(pos, o.after, effort.leave_headings, 2, 2);
+        const std::vector<Outcome> t = play_all(pos, o.after, next, workers);
+        simulations += 1 + std::int64_t(next.size());
+        const double scoring =
+            double(std::count_if(t.begin(), t.end(), [](const Outcome& x) { return x.point; }));
+        value[r] = rate[r] * (1.0 + leave_weight * std::min(1.0, 4.0 * scoring / double(t.size())));
+    }
+    return value;
+}
+
 }  // namespace
 
 CaromPlan plan_three_cushion(const CaromPosition& pos, const PlanSettings& settings,
@@ -164,11 +209,10 @@ CaromPlan plan_three_cushion(const CaromPosition& pos, const PlanSettings& setti
     const CaromEffort effort = carom_effort(settings.level);
     const double scale = planned_scale(settings);
     const int workers = std::max(settings.workers, 1);
-    const rules::CaromState& s = pos.state;
     CaromPlan plan;
     const std::vector<physics::Stroke> strokes =
-        sweep(pos, s, effort.headings, effort.speeds, effort.spins);
-    const std::vector<Outcome> nominal = play_all(pos, s, strokes, workers);
+        sweep(pos, pos.state, effort.headings, effort.speeds, effort.spins);
+    const std::vector<Outcome> nominal = play_all(pos, pos.state, strokes, workers);
     plan.simulations = static_cast<std::int64_t>(strokes.size());
     std::vector<Run> runs = scoring_runs(strokes, nominal, effort.headings);
     if (runs.empty()) {  // nothing scores: the stroke that comes nearest, without a foul
@@ -184,36 +228,10 @@ CaromPlan plan_three_cushion(const CaromPosition& pos, const PlanSettings& setti
     runs.resize(std::min(runs.size(), std::size_t(std::max(effort.shortlist, 1))));
     if (effort.centring > 1)
         centre_runs(pos, runs, effort.headings, effort.centring, workers, plan.simulations);
-    std::vector<double> rate(runs.size(), 1.0);
-    if (scale > 0.0) {
-        const std::size_t n = std::size_t(effort.samples);
-        const std::vector<NoiseDraw> draws = noise_draws(seed, int(n));
-        std::vector<char> pt(runs.size() * n);
-        parallel_for(pt.size(), workers, [&](std::size_t j) {
-            pt[j] = play(pos, s, with_draw(runs[j / n].stroke, draws[j % n], scale)).point;
-        });
-        plan.simulations += std::int64_t(pt.size());
-        for (std::size_t r = 0; r < runs.size(); ++r)
-            rate[r] =
-                std::accumulate(pt.begin() + long(r * n), pt.begin() + long((r + 1) * n), 0.0) /
-                double(n);
-    }
-    std::vector<double> value = rate;
-    std::vector<std::size_t> order(runs.size());
-    std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(),
-                     [&](std::size_t a, std::size_t b) { return rate[a] > rate[b]; });
-    for (std::size_t k = 0; k < std::min(order.size(), std::size_t(effort.leave_checked)); ++k) {
-        const std::size_t r = order[k];
-        const Outcome o = play(pos, s, runs[r].stroke);
-        if (!o.point) continue;
-        const std::vector<physics::Stroke> next = sweep(pos, o.after, effort.leave_headings, 2, 2);
-        const std::vector<Outcome> t = play_all(pos, o.after, next, workers);
-        plan.simulations += 1 + std::int64_t(next.size());
-        const double scoring =
-            double(std::count_if(t.begin(), t.end(), [](const Outcome& x) { return x.point; }));
-        value[r] = rate[r] * (1.0 + leave_weight * std::min(1.0, 4.0 * scoring / double(t.size())));
-    }
+    const std::vector<double> rate =
+        point_rates(pos, runs, effort, scale, seed, workers, plan.simulations);
+    const std::vector<double> value =
+        with_leaves(pos, runs, rate, effort, workers, plan.simulations);
     std::size_t b = 0;
     for (std::size_t r = 1; r < runs.size(); ++r)
         if (value[r] > value[b]) b = r;

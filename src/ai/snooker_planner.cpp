@@ -104,6 +104,31 @@ std::vector<SnookerCandidate> candidates(Search& k, const std::vector<Vec2>& spo
     return out;
 }
 
+struct Played {
+    std::vector<SnookerCandidate> cands;
+    std::vector<SnookerTrial> nominal;
+};
+
+// The candidates from every spot played once without noise; when every one fouls (snookered,
+// or nothing legal), the escapes of the sweep from the first spot too.
+Played play_candidates(Search& k, const std::vector<Vec2>& spots) {
+    Played p;
+    p.cands = candidates(k, spots);
+    p.nominal = play_nominal(k, p.cands);
+    const bool all_foul = std::all_of(p.nominal.begin(), p.nominal.end(),
+                                      [](const SnookerTrial& t) { return t.foul; });
+    if (all_foul) {
+        const bool in_hand = k.pos.state.cue_ball == rules::CueBall::in_hand;
+        std::vector<SnookerCandidate> esc =
+            snooker_escapes(k.pos, spots.front(), in_hand, k.effort);
+        std::vector<SnookerTrial> t = play_nominal(k, esc);
+        p.cands.insert(p.cands.end(), esc.begin(), esc.end());
+        p.nominal.insert(p.nominal.end(), t.begin(), t.end());
+    }
+    if (p.cands.empty()) throw std::logic_error("plan_snooker: no candidate stroke");
+    return p;
+}
+
 SnookerPlan to_plan(const SnookerCandidate& c, const Mean& m, std::int64_t simulations) {
     SnookerPlan p;
     p.stroke = c.stroke;
@@ -132,40 +157,29 @@ SnookerPlan plan_snooker(const SnookerPosition& pos, const PlanSettings& setting
         effort.model_sigma_deg > 0.0 ? effort.model_sigma_deg : heading_sigma_deg(pos.params);
     const double sigma = sigma_1x * scale;
     Search k{pos, effort, std::max(settings.workers, 1), scale, sigma, {pos, scale, sigma}};
-    const std::vector<Vec2> spots = cue_spots(k);
-    std::vector<SnookerCandidate> cands = candidates(k, spots);
-    std::vector<SnookerTrial> nominal = play_nominal(k, cands);
-    const bool all_foul =
-        std::all_of(nominal.begin(), nominal.end(), [](const SnookerTrial& t) { return t.foul; });
-    if (all_foul) {  // snookered, or nothing legal: the sweep for cushion paths
-        const bool in_hand = pos.state.cue_ball == rules::CueBall::in_hand;
-        std::vector<SnookerCandidate> esc = snooker_escapes(pos, spots.front(), in_hand, effort);
-        std::vector<SnookerTrial> t = play_nominal(k, esc);
-        cands.insert(cands.end(), esc.begin(), esc.end());
-        nominal.insert(nominal.end(), t.begin(), t.end());
-    }
-    if (cands.empty()) throw std::logic_error("plan_snooker: no candidate stroke");
-    std::vector<Mean> means(cands.size());
-    const auto nominal_value = [&](std::size_t i) { return nominal[i].value; };
+    Played p = play_candidates(k, cue_spots(k));
+    const auto nominal_value = [&](std::size_t i) { return p.nominal[i].value; };
     if (scale == 0.0) {
-        const std::size_t b = best(cands.size(), 1, nominal_value).front();
-        return to_plan(cands[b],
-                       {nominal[b].value, double(nominal[b].stays || !nominal[b].foul), 1},
-                       k.simulations);
+        const std::size_t b = best(p.cands.size(), 1, nominal_value).front();
+        const SnookerTrial& t = p.nominal[b];
+        const bool success = p.cands[b].kind == Kind::pot ? t.stays : !t.foul;
+        return to_plan(p.cands[b], {t.value, success ? 1.0 : 0.0, 1}, k.simulations);
     }
+    // The shortlist on the same draws; the finalists on as many more.
     const std::size_t n = static_cast<std::size_t>(effort.samples);
     const std::vector<NoiseDraw> draws = noise_draws(seed, static_cast<int>(2 * n));
+    std::vector<Mean> means(p.cands.size());
     const std::vector<std::size_t> list =
-        best(cands.size(), static_cast<std::size_t>(effort.shortlist), nominal_value);
-    score(k, cands, list, draws, 0, n, means);
+        best(p.cands.size(), static_cast<std::size_t>(effort.shortlist), nominal_value);
+    score(k, p.cands, list, draws, 0, n, means);
     const auto mean_value = [&](std::size_t i) {
         return means[i].n ? means[i].value / means[i].n : -1e9;
     };
     const std::vector<std::size_t> finals =
-        best(cands.size(), static_cast<std::size_t>(effort.finalists), mean_value);
-    if (finals.size() > 1) score(k, cands, finals, draws, n, n, means);
-    const std::size_t b = best(cands.size(), 1, mean_value).front();
-    return to_plan(cands[b], means[b], k.simulations);
+        best(p.cands.size(), static_cast<std::size_t>(effort.finalists), mean_value);
+    if (finals.size() > 1) score(k, p.cands, finals, draws, n, n, means);
+    const std::size_t b = best(p.cands.size(), 1, mean_value).front();
+    return to_plan(p.cands[b], means[b], k.simulations);
 }
 
 rules::SnookerState with_plan(rules::SnookerState s, const SnookerPlan& plan) {
