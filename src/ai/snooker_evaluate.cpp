@@ -28,6 +28,9 @@ int nomination_for(const rules::SnookerState& s, std::optional<int> hit) {
     return targets.empty() ? sb::black : targets.back();
 }
 
+// What missing the next pot costs: the table to the opponent (unit: points).
+constexpr double miss_value = -1.0;
+
 // The striker's chance to win the frame from the scores of `s` and the points left on the
 // table: even scores 1/2, a lead that the points left cannot make up near 1.
 double win_chance(const rules::SnookerState& s, rules::Player me) {
@@ -47,8 +50,8 @@ rules::SnookerState SnookerEvaluator::start(const SnookerCandidate& c) const {
     return s;
 }
 
-SnookerTrial SnookerEvaluator::play(const rules::SnookerState& s,
-                                    const physics::Stroke& stroke) const {
+SnookerTrial SnookerEvaluator::play(const rules::SnookerState& s, const physics::Stroke& stroke,
+                                    const SnookerEffort* deeper) const {
     const physics::Shot shot = physics::simulate(
         pos_.table, pos_.params, snooker_layout(s, s.positions.at(sb::cue)), &stroke);
     const rules::SnookerVerdict v =
@@ -56,22 +59,49 @@ SnookerTrial SnookerEvaluator::play(const rules::SnookerState& s,
     const rules::Player me = s.shooter;
     SnookerTrial t;
     t.foul = v.foul;
-    // Points ahead plus what the frame is worth times the chance to win it, so that the frame's
-    // end and a lead the opponent cannot make up weigh the same.
+    // Points ahead plus what the frame is worth times the change in the chance to win it, so
+    // that the frame's end and a lead the opponent cannot make up weigh the same.
     const double points = v.points_scored - v.foul_points;
+    const double before = win_chance(s, me);
     if (v.frame_over) {
         t.stays = v.winner == me;
-        t.value = points + (t.stays ? frame_value : -frame_value);
+        t.value = points + 2.0 * frame_value * ((t.stays ? 1.0 : 0.0) - before);
         return t;
     }
-    t.value = points + frame_value * (2.0 * win_chance(v.state, me) - 1.0);
+    t.value = points + 2.0 * frame_value * (win_chance(v.state, me) - before);
     if (v.state.shooter == me) {
         t.stays = true;
-        t.value += table_value(pos_, v.state, sigma_deg_);
+        t.value += deeper && v.state.positions.count(sb::cue)
+                       ? deep_value(v.state, *deeper, t)
+                       : table_value(pos_, v.state, sigma_deg_);
     } else {
         t.value -= table_value(pos_, v.state, sigma_deg_);
     }
     return t;
+}
+
+double SnookerEvaluator::deep_value(const rules::SnookerState& s, const SnookerEffort& effort,
+                                    SnookerTrial& t) const {
+    SnookerPosition next = pos_;
+    next.state = s;
+    const SnookerEvaluator eval(next, scale_, sigma_deg_);
+    SnookerEffort pots;
+    pots.pot_pairs = effort.next_pairs;
+    pots.speeds = effort.next_speeds;
+    pots.spins = effort.next_spins;
+    pots.refine_steps = 1;
+    std::vector<SnookerCandidate> cands =
+        snooker_pots(next, s.positions.at(sb::cue), false, pots, sigma_deg_, t.simulations);
+    // With no pot worth more, a safety: about even, unless snookered.
+    const double one_ply = table_value(pos_, s, sigma_deg_);
+    double best = std::min(one_ply, 0.0);
+    for (SnookerCandidate& c : cands) {
+        const SnookerTrial r = eval.nominal(c);
+        ++t.simulations;
+        const double v = r.stays ? c.prior * r.value + (1.0 - c.prior) * miss_value : r.value;
+        best = std::max(best, v);
+    }
+    return best;
 }
 
 SnookerTrial SnookerEvaluator::nominal(SnookerCandidate& c) const {
@@ -87,6 +117,11 @@ SnookerTrial SnookerEvaluator::nominal(SnookerCandidate& c) const {
 
 SnookerTrial SnookerEvaluator::trial(const SnookerCandidate& c, const NoiseDraw& draw) const {
     return play(start(c), with_draw(c.stroke, draw, scale_));
+}
+
+SnookerTrial SnookerEvaluator::deep_trial(const SnookerCandidate& c, const NoiseDraw& draw,
+                                          const SnookerEffort& effort) const {
+    return play(start(c), with_draw(c.stroke, draw, scale_), &effort);
 }
 
 }  // namespace ai

@@ -141,6 +141,31 @@ SnookerPlan to_plan(const SnookerCandidate& c, const Mean& m, std::int64_t simul
     return p;
 }
 
+// The best few by their means valued two plies deep on the same draws; the best deep mean wins.
+SnookerPlan deep_choice(Search& k, const std::vector<SnookerCandidate>& cands,
+                        const std::vector<Mean>& means, const std::vector<NoiseDraw>& draws) {
+    const std::vector<std::size_t> list =
+        best(cands.size(), static_cast<std::size_t>(k.effort.deep_finalists),
+             [&](std::size_t i) { return means[i].n ? means[i].value / means[i].n : -1e9; });
+    const std::size_t n =
+        std::min(draws.size(), static_cast<std::size_t>(std::max(k.effort.deep_samples, 1)));
+    std::vector<SnookerTrial> t(list.size() * n);
+    parallel_for(t.size(), k.workers, [&](std::size_t j) {
+        t[j] = k.eval.deep_trial(cands[list[j / n]], draws[j % n], k.effort);
+    });
+    std::vector<Mean> deep(list.size());
+    for (std::size_t j = 0; j < t.size(); ++j) {
+        Mean& m = deep[j / n];
+        m.value += t[j].value;
+        m.success += cands[list[j / n]].kind == Kind::pot ? t[j].stays : !t[j].foul;
+        ++m.n;
+        k.simulations += t[j].simulations;
+    }
+    const std::size_t b =
+        best(list.size(), 1, [&](std::size_t i) { return deep[i].value / deep[i].n; }).front();
+    return to_plan(cands[list[b]], deep[b], k.simulations);
+}
+
 }  // namespace
 
 SnookerPosition snooker_position(const physics::Table& table, const physics::Params& params,
@@ -178,6 +203,7 @@ SnookerPlan plan_snooker(const SnookerPosition& pos, const PlanSettings& setting
     const std::vector<std::size_t> finals =
         best(p.cands.size(), static_cast<std::size_t>(effort.finalists), mean_value);
     if (finals.size() > 1) score(k, p.cands, finals, draws, n, n, means);
+    if (effort.deep_finalists > 1) return deep_choice(k, p.cands, means, draws);
     const std::size_t b = best(p.cands.size(), 1, mean_value).front();
     return to_plan(p.cands[b], means[b], k.simulations);
 }

@@ -20,6 +20,11 @@ struct SnookerEffort {
     int shortlist = 0;        ///< candidates played under noise, the best nominal ones
     int samples = 0;          ///< noise draws per shortlisted candidate
     int finalists = 0;        ///< the best few get `samples` more draws
+    int deep_finalists = 0;   ///< the best few then valued two plies deep (0: none)
+    int deep_samples = 0;     ///< noise draws of each deep finalist
+    int next_pairs = 0;       ///< second ply: (ball, pocket) pairs tried
+    int next_speeds = 0;      ///< second ply: speeds per pot
+    int next_spins = 0;       ///< second ply: spins per pot
     double model_sigma_deg = 0.0;  ///< the shot model's heading σ at 1×; 0: the cue's own
 };
 

@@ -79,9 +79,12 @@ std::vector<SnookerCandidate> snooker_escapes(const SnookerPosition& pos, physic
 
 /// One play of a candidate.
 struct SnookerTrial {
-    double value = 0.0;  ///< points ahead for the striker, this stroke's and the table's next
+    /// Points ahead for the striker: this stroke's, the change in the frame's worth to him
+    /// (frame_value × twice the change of his chance to win it) and the table's next.
+    double value = 0.0;
     bool stays = false;  ///< the striker stays at the table (or wins the frame)
     bool foul = false;
+    std::int64_t simulations = 1;  ///< the physics simulations it ran (a deep trial's too)
 };
 
 class SnookerEvaluator {
@@ -95,11 +98,20 @@ class SnookerEvaluator {
     SnookerTrial nominal(SnookerCandidate& c) const;
     /// Plays the candidate with one noise draw.
     SnookerTrial trial(const SnookerCandidate& c, const NoiseDraw& draw) const;
+    /// The same, and where the striker stays at the table it is valued two plies deep: his
+    /// likeliest next pots (`effort`'s next_*) are played once without noise from where the
+    /// balls stopped, each worth its model chance × what it leads to (one ply, as `nominal`)
+    /// plus the rest × the cost of a miss; the best of them, at least a safety's 0.
+    SnookerTrial deep_trial(const SnookerCandidate& c, const NoiseDraw& draw,
+                            const SnookerEffort& effort) const;
     /// The state the candidate is played from (the nomination and the cue ball placed).
     rules::SnookerState start(const SnookerCandidate& c) const;
 
   private:
-    SnookerTrial play(const rules::SnookerState& s, const physics::Stroke& stroke) const;
+    SnookerTrial play(const rules::SnookerState& s, const physics::Stroke& stroke,
+                      const SnookerEffort* deeper = nullptr) const;
+    double deep_value(const rules::SnookerState& s, const SnookerEffort& effort,
+                      SnookerTrial& t) const;
 
     const SnookerPosition& pos_;
     double scale_;
