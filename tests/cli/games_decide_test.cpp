@@ -86,7 +86,8 @@ TEST(DecideSnooker, ChoosesAfterAFoul) {
 
 TEST(DecideThreeCushion, StrikesTheShootersBallReproducibly) {
     const json j = decide(kOpening);
-    for (const char* key : {"stroke", "expected_success", "expected_value", "simulations", "seconds"})
+    for (const char* key :
+         {"stroke", "expected_success", "expected_value", "simulations", "seconds"})
         EXPECT_TRUE(j.contains(key)) << key;
     EXPECT_EQ(j["stroke"]["ball"], 0);
     EXPECT_EQ(without_seconds(j), without_seconds(decide(kOpening)));
