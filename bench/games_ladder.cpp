@@ -111,83 +111,94 @@ struct Side {
     std::vector<double> seconds;
 };
 
-void play_pair(const Args& a, int hi, int lo) {
-    std::array<Side, 2> side;
+struct Tally {
+    std::array<Side, 2> side;  ///< by level: 0 the pair's first, 1 its second
     int draws = 0, capped = 0;
     long strokes = 0;
-    for (int k = 0; k < a.games; ++k) {
-        const std::uint64_t game_seed = derive(a.seed, static_cast<std::uint64_t>(k / 2));
-        const bool swapped = k % 2 == 1;
-        const std::array<int, 2> who = swapped ? std::array{1, 0} : std::array{0, 1};
-        const std::array<int, 2> level{hi, lo};
-        std::array<ai::Seat, 2> seats;
-        for (int s = 0; s < 2; ++s) seats[s] = {level[who[s]], derive(game_seed, 1 + who[s])};
-        std::optional<rules::Player> winner;
-        std::array<std::vector<double>, 2> secs;
-        if (a.game == "snooker") {
-            ai::SnookerFrameSetup setup;
-            setup.reds = a.reds;
-            const ai::SnookerFrameReport r =
-                ai::play_snooker_frame(setup, seats, derive(game_seed, 100));
-            winner = r.winner;
-            capped += r.capped;
-            strokes += r.strokes;
-            secs = r.decision_seconds;
-            for (int s = 0; s < 2; ++s) {
-                Side& d = side[who[s]];
-                d.breaks.insert(d.breaks.end(), r.breaks[s].begin(), r.breaks[s].end());
-                d.points += r.scores[s];
-            }
-        } else {
-            ai::CaromGameSetup setup;
-            setup.options.target = a.target;
-            const ai::CaromGameReport r =
-                ai::play_three_cushion_game(setup, seats, derive(game_seed, 100));
-            winner = r.winner;
-            capped += !r.over;
-            strokes += r.strokes;
-            secs = r.decision_seconds;
-            for (int s = 0; s < 2; ++s) {
-                Side& d = side[who[s]];
-                d.points += r.scores[s];
-                d.innings += r.innings[s];
-                d.high_run = std::max(d.high_run, r.high_run[s]);
-            }
+};
+
+// Game k of a pair: seat A is the first level on even k, the second on odd k (the same seed).
+void play_game(const Args& a, const std::array<int, 2>& level, int k, Tally& t) {
+    const std::uint64_t game_seed = derive(a.seed, static_cast<std::uint64_t>(k / 2));
+    const std::array<int, 2> who = k % 2 == 1 ? std::array{1, 0} : std::array{0, 1};
+    std::array<ai::Seat, 2> seats;
+    for (int s = 0; s < 2; ++s) seats[s] = {level[who[s]], derive(game_seed, 1 + who[s])};
+    std::optional<rules::Player> winner;
+    std::array<std::vector<double>, 2> secs;
+    if (a.game == "snooker") {
+        ai::SnookerFrameSetup setup;
+        setup.reds = a.reds;
+        const ai::SnookerFrameReport r =
+            ai::play_snooker_frame(setup, seats, derive(game_seed, 100));
+        winner = r.winner;
+        t.capped += r.capped;
+        t.strokes += r.strokes;
+        secs = r.decision_seconds;
+        for (int s = 0; s < 2; ++s) {
+            Side& d = t.side[who[s]];
+            d.breaks.insert(d.breaks.end(), r.breaks[s].begin(), r.breaks[s].end());
+            d.points += r.scores[s];
         }
-        if (winner)
-            side[who[rules::index(*winner)]].wins += 1;
-        else
-            ++draws;
-        for (int s = 0; s < 2; ++s)
-            side[who[s]].seconds.insert(side[who[s]].seconds.end(), secs[s].begin(), secs[s].end());
+    } else {
+        ai::CaromGameSetup setup;
+        setup.options.target = a.target;
+        const ai::CaromGameReport r =
+            ai::play_three_cushion_game(setup, seats, derive(game_seed, 100));
+        winner = r.winner;
+        t.capped += !r.over;
+        t.strokes += r.strokes;
+        secs = r.decision_seconds;
+        for (int s = 0; s < 2; ++s) {
+            Side& d = t.side[who[s]];
+            d.points += r.scores[s];
+            d.innings += r.innings[s];
+            d.high_run = std::max(d.high_run, r.high_run[s]);
+        }
+    }
+    if (winner)
+        t.side[who[rules::index(*winner)]].wins += 1;
+    else
+        ++t.draws;
+    for (int s = 0; s < 2; ++s)
+        t.side[who[s]].seconds.insert(t.side[who[s]].seconds.end(), secs[s].begin(), secs[s].end());
+}
+
+void print_side(const Args& a, const Side& d, int level, bool first) {
+    std::printf(", \"level%d_%s\": {", level, first ? "first" : "second");
+    if (a.game == "snooker") {
+        const double sum = std::accumulate(d.breaks.begin(), d.breaks.end(), 0.0);
+        std::printf(
+            "\"points_per_frame\": %.2f, \"scoring_visits\": %zu, \"mean_break\": %.2f, "
+            "\"highest_break\": %d, ",
+            double(d.points) / a.games, d.breaks.size(),
+            d.breaks.empty() ? 0.0 : sum / double(d.breaks.size()),
+            d.breaks.empty() ? 0 : *std::max_element(d.breaks.begin(), d.breaks.end()));
+    } else {
+        std::printf("\"points\": %ld, \"innings\": %ld, \"average\": %.3f, \"high_run\": %d, ",
+                    d.points, d.innings, d.innings ? double(d.points) / double(d.innings) : 0.0,
+                    d.high_run);
+    }
+    std::printf("\"decisions\": %zu, \"decision_median_s\": %.4f, \"decision_p95_s\": %.4f}",
+                d.seconds.size(), quantile(d.seconds, 0.5), quantile(d.seconds, 0.95));
+}
+
+void play_pair(const Args& a, int hi, int lo) {
+    Tally t;
+    for (int k = 0; k < a.games; ++k) {
+        play_game(a, {hi, lo}, k, t);
         std::fprintf(stderr, "%d:%d game %d/%d\n", hi, lo, k + 1, a.games);
     }
-    const auto [low, high] = wilson(side[0].wins + 0.5 * draws, a.games);
+    const double share = (t.side[0].wins + 0.5 * t.draws) / a.games;
+    const auto [low, high] = wilson(t.side[0].wins + 0.5 * t.draws, a.games);
     std::printf(
-        "{\"game\": \"%s\", \"pair\": \"%d:%d\", \"games\": %d, \"reds\": %d, \"target\": %d, "
-        "\"wins\": [%g, %g], \"draws\": %d, \"capped\": %d, \"first_share\": %.3f, "
-        "\"first_share_95\": [%.3f, %.3f], \"strokes_per_game\": %.1f",
-        a.game.c_str(), hi, lo, a.games, a.reds, a.target, side[0].wins, side[1].wins, draws,
-        capped, (side[0].wins + 0.5 * draws) / a.games, low, high, double(strokes) / a.games);
-    for (int s = 0; s < 2; ++s) {
-        const Side& d = side[s];
-        std::printf(", \"level%d_%s\": {", s == 0 ? hi : lo, s == 0 ? "first" : "second");
-        if (a.game == "snooker") {
-            const double sum = std::accumulate(d.breaks.begin(), d.breaks.end(), 0.0);
-            std::printf(
-                "\"points_per_frame\": %.2f, \"scoring_visits\": %zu, \"mean_break\": %.2f, "
-                "\"highest_break\": %d, ",
-                double(d.points) / a.games, d.breaks.size(),
-                d.breaks.empty() ? 0.0 : sum / double(d.breaks.size()),
-                d.breaks.empty() ? 0 : *std::max_element(d.breaks.begin(), d.breaks.end()));
-        } else {
-            std::printf("\"points\": %ld, \"innings\": %ld, \"average\": %.3f, \"high_run\": %d, ",
-                        d.points, d.innings, d.innings ? double(d.points) / double(d.innings) : 0.0,
-                        d.high_run);
-        }
-        std::printf("\"decisions\": %zu, \"decision_median_s\": %.4f, \"decision_p95_s\": %.4f}",
-                    d.seconds.size(), quantile(d.seconds, 0.5), quantile(d.seconds, 0.95));
-    }
+        "{\"game\": \"%s\", \"pair\": \"%d:%d\", \"games\": %d, \"reds\": %d, "
+        "\"target\": %d, \"wins\": [%g, %g], \"draws\": %d, \"capped\": %d, "
+        "\"first_share\": %.3f, \"first_share_95\": [%.3f, %.3f], "
+        "\"strokes_per_game\": %.1f",
+        a.game.c_str(), hi, lo, a.games, a.reds, a.target, t.side[0].wins, t.side[1].wins, t.draws,
+        t.capped, share, low, high, double(t.strokes) / a.games);
+    print_side(a, t.side[0], hi, true);
+    print_side(a, t.side[1], lo, false);
     std::printf("}\n");
     std::fflush(stdout);
 }
