@@ -6,6 +6,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/events_input.hpp"
+#include "cli/games_json.hpp"
 #include "cli/json_out.hpp"
 #include "cli/physics_input.hpp"
 #include "rules/names.hpp"
@@ -107,6 +108,23 @@ ordered_json carom_judge_document(const JsonIn& in) {
     const std::vector<physics::Event> events = read_events(in.at("events"), set);
     return verdict_to_json(rules::judge_three_cushion(options, physics::carom_spots(table),
                                                       params.ball_radius, state, events));
+}
+
+rules::CaromOptions read_carom_options(const JsonIn& in) {
+    return read_options(in);
+}
+
+rules::CaromState read_carom_state(const JsonIn& in, const rules::CaromOptions& o,
+                                   const physics::Table& table, const physics::Params& params) {
+    return read_state(in, o, table, params);
+}
+
+ordered_json carom_state_json(const rules::CaromState& s) {
+    return state_to_json(s);
+}
+
+ordered_json carom_verdict_json(const rules::CaromVerdict& v) {
+    return verdict_to_json(v);
 }
 
 }  // namespace cli

@@ -76,8 +76,15 @@ nlohmann::ordered_json call_json(const rules::Call& c) {
 nlohmann::ordered_json decide_command(const nlohmann::json& input) {
     using clock = std::chrono::steady_clock;
     JsonIn in(input, "");
-    in.expect_object({"game", "table", "options", "state", "choice", "level", "noise", "seed"});
-    const rules::Game game = read_game(in.at("game"));
+    in.expect_object(
+        {"game", "table", "options", "state", "choice", "level", "noise", "seed", "after_foul"});
+    // Snooker and three-cushion have their own schema (games_decide.cpp).
+    const JsonIn game_in = in.at("game");
+    if (game_in.raw() == "snooker") return snooker_decide_document(in);
+    if (game_in.raw() == "three_cushion") return carom_decide_document(in);
+    if (auto a = in.find("after_foul"))
+        a->fail("\"after_foul\" is snooker's choice after a foul: use \"choice\" in pool");
+    const rules::Game game = read_game(game_in);
     const physics::Params params;
     physics::TableSpec spec = *physics::table_preset("9ft");
     if (auto t = in.find("table")) {

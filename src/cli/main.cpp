@@ -4,7 +4,7 @@
 //   coolaaber-cli decide [FILE] [--pretty]
 //   coolaaber-cli bench [--runs N] [--pretty]
 //   coolaaber-cli match --game 8ball --players random,random [--games N] [--seed S] [--log FILE]
-//                       [--noise X] [--duplicate] [--pretty]
+//                       [--noise X] [--duplicate] [--reds N] [--target N] [--pretty]
 // Exit status: 0 success; 2 bad input (one line on stderr: "error: <json path>: <message>",
 // nothing on stdout); 1 internal error.
 #include <fmt/format.h>
@@ -36,6 +36,8 @@ struct CommandLine {
     cli::MatchOptions match;
     std::string games = std::to_string(cli::MatchOptions{}.games);
     std::string noise = fmt::format("{}", cli::MatchOptions{}.noise);
+    std::string reds;    ///< snooker: empty, all 15
+    std::string target;  ///< three-cushion: empty, the rules' default
 };
 
 struct Verbs {
@@ -66,7 +68,8 @@ int print_document(std::string_view text) {
 
 void add_match_flags(CLI::App& match, CommandLine& line) {
     cli::MatchOptions& o = line.match;
-    match.add_option("--game", o.game, "8ball or 9ball")->capture_default_str();
+    match.add_option("--game", o.game, "8ball, 9ball, snooker or three_cushion")
+        ->capture_default_str();
     match.add_option("--players", o.players, "Two players: random, ai:LEVEL")
         ->capture_default_str();
     match.add_option("--games", line.games, "Games to play")->capture_default_str();
@@ -74,6 +77,8 @@ void add_match_flags(CLI::App& match, CommandLine& line) {
     match.add_option("--log", o.log, "Write one JSON line per shot to FILE");
     match.add_option("--noise", line.noise, "Scale of the execution noise")->capture_default_str();
     match.add_flag("--duplicate", o.duplicate, "Play each seed twice, the sides swapped");
+    match.add_option("--reds", line.reds, "Snooker: reds racked (1-15, default 15)");
+    match.add_option("--target", line.target, "Three-cushion: points to win a game");
 }
 
 Verbs add_verbs(CLI::App& app, CommandLine& line) {
@@ -117,6 +122,9 @@ std::string run_verb(const Verbs& v, CommandLine& line) {
         o.games = cli::read_integer_flag("--games", line.games);
         o.noise = cli::read_number_flag("--noise", line.noise);
         if (v.match->count("--log") > 0) o.log = cli::read_file_flag("--log", o.log);
+        if (v.match->count("--reds") > 0) o.reds = cli::read_integer_flag("--reds", line.reds);
+        if (v.match->count("--target") > 0)
+            o.target = cli::read_integer_flag("--target", line.target);
         out = cli::match_command(o);
     }
     return cli::write_document(out, line.pretty);

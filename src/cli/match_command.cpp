@@ -14,6 +14,7 @@
 #include "cli/commands.hpp"
 #include "cli/json_in.hpp"
 #include "cli/json_out.hpp"
+#include "cli/match_support.hpp"
 #include "cli/rules_json.hpp"
 #include "cli/shot_output.hpp"
 #include "game/autoplay.hpp"
@@ -29,20 +30,6 @@ namespace {
 
 constexpr std::int64_t max_games = 1'000'000;
 constexpr double max_noise = 100.0;
-
-// The value below which a fraction q of the sorted samples lie (nearest rank).
-double quantile(const std::vector<double>& sorted, double q) {
-    const auto rank = static_cast<std::size_t>(std::ceil(q * static_cast<double>(sorted.size())));
-    return sorted[std::clamp<std::size_t>(rank, 1, sorted.size()) - 1];
-}
-
-// A seed derived from `seed` and a small tag, so that each game and each player draws from its
-// own stream.
-std::uint64_t derive(std::uint64_t seed, std::uint64_t tag) {
-    physics::SplitMix64 mix(seed ^ (0xd1b54a32d192ed03ULL * (tag + 1)));
-    mix.next();
-    return mix.next();
-}
 
 // "random" or "ai:LEVEL" (LEVEL 1–5).
 std::string read_player(const std::string& kind) {
@@ -121,14 +108,8 @@ struct Match {
     bool by_seat;  ///< the same kind on both sides: results by seat (A, B), else by kind
 };
 
-Match read_match(const MatchOptions& options) {
-    std::optional<rules::Game> game = rules::parse<rules::Game>(options.game);
-    if (!game)
-        throw BadInput(
-            "--game",
-            fmt::format("unknown game \"{}\" (expected \"8ball\" or \"9ball\")", options.game));
-    const std::array<std::string, 2> kinds = read_players(options.players);
-    const std::uint64_t seed = read_seed(options.seed);
+// The checks every game's match shares.
+void check_counts(const MatchOptions& options) {
     if (options.games < 1 || options.games > max_games)
         throw BadInput("--games", fmt::format("{} is out of range: must be from 1 to {}",
                                               options.games, max_games));
@@ -140,7 +121,36 @@ Match read_match(const MatchOptions& options) {
     if (!std::isfinite(options.noise) || options.noise < 0.0 || options.noise > max_noise)
         throw BadInput("--noise", fmt::format("{} is out of range: must be from 0 to {}",
                                               options.noise, max_noise));
+}
+
+Match read_match(const MatchOptions& options) {
+    std::optional<rules::Game> game = rules::parse<rules::Game>(options.game);
+    if (!game)
+        throw BadInput("--game", fmt::format("unknown game \"{}\" (expected \"8ball\", "
+                                             "\"9ball\", \"snooker\" or \"three_cushion\")",
+                                             options.game));
+    const std::array<std::string, 2> kinds = read_players(options.players);
+    const std::uint64_t seed = read_seed(options.seed);
+    check_counts(options);
+    if (options.reds) throw BadInput("--reds", "--reds is for --game snooker");
+    if (options.target) throw BadInput("--target", "--target is for --game three_cushion");
     return {*game, kinds, seed, kinds[0] == kinds[1]};
+}
+
+// Snooker and three-cushion: computer players only (games_match.cpp).
+nlohmann::ordered_json read_games_match(const MatchOptions& options) {
+    const std::array<std::string, 2> kinds = read_players(options.players);
+    std::array<int, 2> levels{};
+    for (int seat = 0; seat < 2; ++seat) {
+        if (kinds[seat] == "random")
+            throw BadInput("--players", fmt::format("{} is played by computer players only: use "
+                                                    "ai:1 to ai:5",
+                                                    options.game));
+        levels[seat] = kinds[seat][3] - '0';
+    }
+    const std::uint64_t seed = read_seed(options.seed);
+    check_counts(options);
+    return games_match(options, seed, levels);
 }
 
 // What the games add up to.
@@ -242,6 +252,8 @@ nlohmann::ordered_json summary(const MatchOptions& options, const Match& m, Tall
 
 nlohmann::ordered_json match_command(const MatchOptions& options) {
     using clock = std::chrono::steady_clock;
+    if (options.game == "snooker" || options.game == "three_cushion")
+        return read_games_match(options);
     const auto start = clock::now();
     const Match m = read_match(options);
     std::ofstream log;

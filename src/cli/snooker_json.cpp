@@ -8,6 +8,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/events_input.hpp"
+#include "cli/games_json.hpp"
 #include "cli/json_out.hpp"
 #include "cli/physics_input.hpp"
 #include "rules/names.hpp"
@@ -166,6 +167,23 @@ ordered_json snooker_judge_document(const JsonIn& in) {
     const std::vector<physics::Event> events = read_events(in.at("events"), set);
     const rules::SnookerTable t{physics::snooker_markings(table), params.ball_radius};
     return verdict_to_json(rules::judge_snooker(options, t, state, events));
+}
+
+rules::SnookerOptions read_snooker_options(const JsonIn& in) {
+    return read_options(in);
+}
+
+rules::SnookerState read_snooker_state(const JsonIn& in, const physics::Table& table,
+                                       const physics::Params& params) {
+    return read_state(in, table, params);
+}
+
+ordered_json snooker_state_json(const rules::SnookerState& s) {
+    return state_to_json(s);
+}
+
+ordered_json snooker_verdict_json(const rules::SnookerVerdict& v) {
+    return verdict_to_json(v);
 }
 
 }  // namespace cli

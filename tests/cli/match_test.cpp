@@ -114,7 +114,7 @@ TEST(Match, BadCommandLines) {
         {"--players ai:9,random", "--players", "ai:1 to ai:5"},
         {"--players random", "--players", "two players"},
         {"--players random,human", "--players", "unknown player"},
-        {"--game snooker", "--game", "unknown game"},
+        {"--game pool", "--game", "unknown game"},
         {"--games 0", "--games", "out of range"},
         {"--games 3 --duplicate", "--games", "even"},
         {"--noise -1", "--noise", "out of range"},
