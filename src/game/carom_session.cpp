@@ -92,9 +92,8 @@ const rules::CaromVerdict& CaromSession::play(const physics::Stroke& stroke) {
     physics::Stroke k = stroke;
     k.ball = cue_ball();
     physics::Shot shot = physics::simulate(table_, config_.params, balls(), &k);
-    rules::CaromVerdict v = rules::judge_three_cushion(config_.options, spots_,
-                                                       config_.params.ball_radius, state_,
-                                                       shot.events());
+    rules::CaromVerdict v = rules::judge_three_cushion(
+        config_.options, spots_, config_.params.ball_radius, state_, shot.events());
     state_ = v.state;
     if (v.game_over) {
         over_ = true;

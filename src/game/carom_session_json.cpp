@@ -58,7 +58,8 @@ rules::CaromState read_state(const Field& f, const CaromSession& s) {
         f.at("opening").fail("the opening stroke comes before any point");
     st.positions = match_json::read_positions(f.at("positions"), s.table(), s.config().params,
                                               [](int id) { return id >= 0 && id <= 2; });
-    if (st.positions.size() != 3) f.at("positions").fail("the white, the yellow and the red (\"0\", \"1\", \"2\")");
+    if (st.positions.size() != 3)
+        f.at("positions").fail("the white, the yellow and the red (\"0\", \"1\", \"2\")");
     return st;
 }
 
@@ -74,8 +75,7 @@ ordered_json config_json(const CaromConfig& c) {
 }
 
 CaromConfig read_config(const Field& f) {
-    f.require_fields(
-        {"target", "equal_innings", "table", "params", "players", "first_starter"});
+    f.require_fields({"target", "equal_innings", "table", "params", "players", "first_starter"});
     CaromConfig c;
     c.options.target = static_cast<int>(f.at("target").integer_in(1, 1000));
     c.options.equal_innings = f.at("equal_innings").boolean();

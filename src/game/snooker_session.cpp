@@ -150,7 +150,8 @@ void SnookerSession::nominate(std::optional<int> ball) {
         return;
     }
     if (!may_nominate())
-        throw Refused(fmt::format("There is nothing to nominate: {} is on.", ball_on_name(ball_on())));
+        throw Refused(
+            fmt::format("There is nothing to nominate: {} is on.", ball_on_name(ball_on())));
     if (!state_.has(*ball))
         throw Refused(fmt::format("The {} is not on the table.", snooker_ball_name(*ball)));
     if (state_.colour_on && !physics::is_colour(*ball))
@@ -195,8 +196,8 @@ void SnookerSession::choose(rules::AfterFoul choice) {
     rules::SnookerVerdict v;
     v.state = state_;
     v.may_ask_to_play_again = true;
-    v.miss = std::find(choices_.begin(), choices_.end(), rules::AfterFoul::replace) !=
-             choices_.end();
+    v.miss =
+        std::find(choices_.begin(), choices_.end(), rules::AfterFoul::replace) != choices_.end();
     v.misses = pending_misses_;
     state_ = rules::resolve_after_foul(v, before_, choice);
     choices_.clear();

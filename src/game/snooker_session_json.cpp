@@ -51,9 +51,10 @@ void check_state(const Field& f, const rules::SnookerState& s, const rules::Snoo
     if (s.reds() > 0)
         for (int c = sb::yellow; c <= sb::black; ++c)
             if (!s.has(c))
-                f.at("on_table").fail(fmt::format(
-                    "the {} is missing: colours stay on the table while reds remain",
-                    snooker_ball_name(c)));
+                f.at("on_table")
+                    .fail(fmt::format(
+                        "the {} is missing: colours stay on the table while reds remain",
+                        snooker_ball_name(c)));
     if (s.nominated) {
         if (!s.has(*s.nominated))
             f.at("nominated").fail(fmt::format("ball {} is not on the table", *s.nominated));
@@ -88,9 +89,8 @@ rules::SnookerState read_state(const Field& f, const SnookerSession& s) {
     st.scores = match_json::read_pair(f.at("scores"), 0, max_score);
     st.break_points = static_cast<int>(f.at("break").integer_in(0, max_score));
     st.misses = static_cast<int>(f.at("misses").integer_in(0, 2));
-    st.positions = match_json::read_positions(
-        f.at("positions"), s.table(), s.config().params,
-        [&](int id) { return id == sb::cue || st.has(id); });
+    st.positions = match_json::read_positions(f.at("positions"), s.table(), s.config().params,
+                                              [&](int id) { return id == sb::cue || st.has(id); });
     check_state(f, st, s.marks());
     return st;
 }
@@ -159,7 +159,8 @@ std::string SnookerSession::to_json() const {
     } else {
         ordered_json opts = ordered_json::array();
         for (rules::AfterFoul c : choices_) opts.push_back(choice_names[static_cast<int>(c)]);
-        j["pending"] = {{"options", opts}, {"misses", pending_misses_}, {"before", state_json(before_)}};
+        j["pending"] = {
+            {"options", opts}, {"misses", pending_misses_}, {"before", state_json(before_)}};
     }
     return j.dump() + "\n";
 }

@@ -1,11 +1,12 @@
 // game::CaromSession: whole three-cushion games by a random player through the real physics,
 // save/load round trips at every stroke, corrupt saves.
+#include "game/carom_session.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
-#include "game/carom_session.hpp"
 #include "game/json_field.hpp"
 #include "game/session.hpp"
 #include "physics/rack.hpp"
@@ -21,7 +22,8 @@ physics::Stroke random_stroke(const CaromSession& s, physics::SplitMix64& rng) {
     const physics::Vec2 to = s.state().positions.at(target) - s.state().positions.at(cue);
     physics::Stroke k;
     k.speed = 2.0 + 5.0 * rng.uniform();
-    k.heading_deg = std::atan2(to.y, to.x) * 180.0 / std::numbers::pi + 40.0 * (rng.uniform() - 0.5);
+    k.heading_deg =
+        std::atan2(to.y, to.x) * 180.0 / std::numbers::pi + 40.0 * (rng.uniform() - 0.5);
     k.side = 0.6 * (rng.uniform() - 0.5);
     return k;
 }

@@ -1,5 +1,7 @@
 // game::SnookerSession: whole frames by a random player through the real physics (every
 // choice taken at random), save/load round trips at every stroke, corrupt saves, refusals.
+#include "game/snooker_session.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,7 +11,6 @@
 
 #include "game/json_field.hpp"
 #include "game/session.hpp"
-#include "game/snooker_session.hpp"
 #include "physics/rack.hpp"
 
 namespace game {
@@ -26,11 +27,12 @@ physics::Stroke random_stroke(const SnookerSession& s, physics::SplitMix64& rng)
         if (st.colour_on ? physics::is_colour(id) : st.reds() == 0 || physics::is_red(id))
             targets.push_back(id);
     if (targets.empty()) targets.assign(st.on_table.begin(), st.on_table.end());
-    const physics::Vec2 to = st.positions.at(targets[rng.below(targets.size())]) -
-                             st.positions.at(sb::cue);
+    const physics::Vec2 to =
+        st.positions.at(targets[rng.below(targets.size())]) - st.positions.at(sb::cue);
     physics::Stroke k;
     k.speed = 1.0 + 5.0 * rng.uniform();
-    k.heading_deg = std::atan2(to.y, to.x) * 180.0 / std::numbers::pi + 10.0 * (rng.uniform() - 0.5);
+    k.heading_deg =
+        std::atan2(to.y, to.x) * 180.0 / std::numbers::pi + 10.0 * (rng.uniform() - 0.5);
     k.side = 0.4 * (rng.uniform() - 0.5);
     return k;
 }
@@ -153,8 +155,9 @@ TEST(SnookerSession, CorruptSavesNameTheField) {
     EXPECT_EQ(error_of("{").rfind("snooker: ", 0), 0u);
     EXPECT_NE(error_of(with("\"best_of\":1", "\"best_of\":2")).find("snooker.config.best_of"),
               std::string::npos);
-    EXPECT_NE(error_of(with("\"on_table\":[1,", "\"on_table\":[1,1,")).find("snooker.state.on_table[1]"),
-              std::string::npos);
+    EXPECT_NE(
+        error_of(with("\"on_table\":[1,", "\"on_table\":[1,1,")).find("snooker.state.on_table[1]"),
+        std::string::npos);
     EXPECT_NE(error_of(with("coolaaber-snooker", "coolaaber-session")).find("snooker.format"),
               std::string::npos);
     EXPECT_NE(error_of(with("\"16\":[", "\"16\":[0.001,")).find("snooker.state.positions"),
