@@ -59,7 +59,7 @@ SceneFrame build_scene(const Controller& c, AimGuide aim_guide,
     f.tray = c.tray();
     const AimPreview* preview = c.preview();
     const bool at_table = c.session().phase() == game::Phase::shoot && !c.moving();
-    const auto cue = c.session().state().positions.find(0);
+    const auto cue = c.session().state().positions.find(c.cue_ball_id());
     if (at_table && preview && cue != c.session().state().positions.end() &&
         !c.computer_thinking()) {
         const Aim& a = c.aim();
