@@ -116,13 +116,13 @@ void Controller::play_shared(const physics::Stroke& stroke) {
 }
 
 bool Controller::busy() const {
-    return playback_.moving() || thinking_.valid() || computer_decision_.has_value();
+    return playback_.moving() || thinking_.valid() || computer_decision_.has_value() ||
+           match_thinking_.valid() || match_decision_.has_value();
 }
 
 bool Controller::human_to_act() const {
     if (busy() || !settled_) return false;
-    if (snooker_ && !snooker_->to_act()) return false;
-    if (carom_ && !carom_->to_act()) return false;
+    if (snooker_ || carom_) return !match_computer_to_act();
     const std::optional<rules::Player> p = session_.to_act();
     return p && !computers_[rules::index(*p)];
 }
@@ -312,6 +312,7 @@ void Controller::update(double dt) {
         if (!playback_.moving() && !settled_) finish_shot();
         return;
     }
+    if ((snooker_ || carom_) && update_match_computer(dt)) return;
     if (thinking_.valid() &&
         thinking_.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
         game::Decision d;
@@ -373,6 +374,7 @@ void Controller::launch_computer() {
 
 void Controller::wait_for_computer() const {
     if (thinking_.valid()) thinking_.wait();
+    if (match_thinking_.valid()) match_thinking_.wait();
 }
 
 void Controller::stop_thinking() {
@@ -380,6 +382,9 @@ void Controller::stop_thinking() {
     thinking_ = {};
     hinting_ = false;
     computer_decision_.reset();
+    if (match_thinking_.valid()) match_thinking_.wait();
+    match_thinking_ = {};
+    match_decision_.reset();
 }
 
 void Controller::apply_computer(const game::Decision& d) {

@@ -19,6 +19,7 @@
 #include "app/ball_orientations.hpp"
 #include "app/playback.hpp"
 #include "game/carom_session.hpp"
+#include "game/match_player.hpp"
 #include "game/player.hpp"
 #include "game/practice.hpp"
 #include "game/session.hpp"
@@ -78,7 +79,7 @@ class Controller {
     bool busy() const;
     /// The human at the keyboard may act now (aim, strike, place, call, choose).
     bool human_to_act() const;
-    bool computer_thinking() const { return thinking_.valid(); }
+    bool computer_thinking() const { return thinking_.valid() || match_thinking_.valid(); }
     /// Blocks until a computer player thinking now has decided (headless use and tests; the
     /// decision is taken in by the next update()).
     void wait_for_computer() const;
@@ -163,6 +164,8 @@ class Controller {
     // ---- Snooker and three-cushion (docs/app.md, "Snooker and three-cushion"): the match
     // session holds the game; session() mirrors its table (the balls, the striker, a cue ball in
     // hand) so that drawing, aiming and the aim guide work as in pool. Both seats are human.
+    /// Seats whose kind has a player for the game (app/seats.hpp: snooker_computer,
+    /// carom_computer) are played by it; the others are human.
     void start_snooker(game::SnookerSession match, ControllerOptions options);
     void start_carom(game::CaromSession match, ControllerOptions options);
     const game::SnookerSession* snooker() const { return snooker_ ? &*snooker_ : nullptr; }
@@ -186,6 +189,11 @@ class Controller {
   private:
     void play_match(const physics::Stroke& stroke);
     void finish_match_shot();
+    /// A computer seat's turn in a match: thinking, then its aim shown, then the stroke; false
+    /// when there is none.
+    bool update_match_computer(double dt);
+    void apply_match_computer(const game::MatchDecision& d);
+    bool match_computer_to_act() const;
     void mirror_match();
     void begin_match_turn();
     std::vector<std::string> match_info() const;
@@ -235,6 +243,10 @@ class Controller {
     std::optional<game::SnookerSession> snooker_;
     std::optional<game::CaromSession> carom_;
     std::optional<int> manual_nomination_;  ///< the player's own nomination
+    std::array<std::optional<game::SnookerPlayer>, 2> snooker_players_;  ///< computer seats
+    std::array<std::optional<game::CaromPlayer>, 2> carom_players_;
+    std::future<game::MatchDecision> match_thinking_;
+    std::optional<game::MatchDecision> match_decision_;  ///< decided, shown before the strike
 };
 
 }  // namespace app

@@ -10,6 +10,8 @@
 
 #include "app/controller.hpp"
 #include "app/match_words.hpp"
+#include "app/seats.hpp"
+#include "game/stroke_noise.hpp"
 
 namespace app {
 
@@ -39,13 +41,19 @@ game::Session mirror_of(const physics::TableSpec& table, const physics::Params& 
     return game::Session::at_position(std::move(c), std::move(s));
 }
 
+std::uint64_t seat_seed(std::uint64_t seed, std::size_t seat) {
+    physics::SplitMix64 mix(seed ^ (0x5851f42d4c957f2dULL * (seat + 1)));
+    return mix.next();
+}
+
 // The balls the striker may aim at first: the balls on (snooker), the two object balls (carom).
 std::vector<int> match_targets(const game::SnookerSession* snooker,
                                const game::CaromSession* carom) {
     std::vector<int> out;
     if (carom) {  // the opening stroke must hit the red first
         for (const auto& [id, p] : carom->state().positions)
-            if (id != carom->cue_ball() && (!carom->state().opening || id == physics::carom_ball::red))
+            if (id != carom->cue_ball() &&
+                (!carom->state().opening || id == physics::carom_ball::red))
                 out.push_back(id);
         return out;
     }
@@ -53,10 +61,10 @@ std::vector<int> match_targets(const game::SnookerSession* snooker,
     const rules::BallOn on = snooker->ball_on();
     for (int id : s.on_table) {
         const bool want =
-            on == rules::BallOn::red      ? physics::is_red(id)
-            : on == rules::BallOn::colour ? physics::is_colour(id)
-                                          : id == sb::yellow + static_cast<int>(on) -
-                                                      static_cast<int>(rules::BallOn::yellow);
+            on == rules::BallOn::red ? physics::is_red(id)
+            : on == rules::BallOn::colour
+                ? physics::is_colour(id)
+                : id == sb::yellow + static_cast<int>(on) - static_cast<int>(rules::BallOn::yellow);
         if (want) out.push_back(id);
     }
     return out;
@@ -77,8 +85,8 @@ bool clear_path(const std::map<int, physics::Vec2>& pos, int from, int to, physi
 
 // Where the cue ball's centre goes to hit ball `to` full, or failing that thin on either side,
 // with a clear path; empty when every way is blocked.
-std::optional<physics::Vec2> open_contact(const std::map<int, physics::Vec2>& pos, int from,
-                                          int to, double R) {
+std::optional<physics::Vec2> open_contact(const std::map<int, physics::Vec2>& pos, int from, int to,
+                                          double R) {
     const physics::Vec2 d = pos.at(to) - pos.at(from);
     const double n = physics::norm(d);
     if (n <= 0.0) return std::nullopt;
@@ -93,17 +101,84 @@ std::optional<physics::Vec2> open_contact(const std::map<int, physics::Vec2>& po
 }  // namespace
 
 void Controller::start_snooker(game::SnookerSession match, ControllerOptions options) {
-    options.players = {"human", "human"};
+    const std::array<std::string, 2> kinds = options.players;
+    options.players = {"human", "human"};  // no pool computer players behind the mirror
     replace(session_, std::move(options));
+    for (std::size_t i = 0; i < 2; ++i) {
+        snooker_players_[i] =
+            snooker_computer(kinds[i], seat_seed(options_.seed, i), options_.noise);
+        if (snooker_players_[i]) options_.players[i] = kinds[i];
+    }
     snooker_ = std::move(match);
     begin_turn();
 }
 
 void Controller::start_carom(game::CaromSession match, ControllerOptions options) {
+    const std::array<std::string, 2> kinds = options.players;
     options.players = {"human", "human"};
     replace(session_, std::move(options));
+    for (std::size_t i = 0; i < 2; ++i) {
+        carom_players_[i] = carom_computer(kinds[i], seat_seed(options_.seed, i), options_.noise);
+        if (carom_players_[i]) options_.players[i] = kinds[i];
+    }
     carom_ = std::move(match);
     begin_turn();
+}
+
+bool Controller::match_computer_to_act() const {
+    const std::optional<rules::Player> p = snooker_ ? snooker_->to_act() : carom_->to_act();
+    if (!p) return true;  // nobody is to act: not a human's turn
+    return snooker_ ? snooker_players_[rules::index(*p)].has_value()
+                    : carom_players_[rules::index(*p)].has_value();
+}
+
+bool Controller::update_match_computer(double dt) {
+    if (match_thinking_.valid()) {
+        if (match_thinking_.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
+            return true;
+        try {
+            apply_match_computer(match_thinking_.get());
+        } catch (const std::exception& e) {
+            refusal_ = std::string("the computer player failed: ") + e.what();
+        }
+        return true;
+    }
+    if (!match_decision_) return false;
+    computer_aim_left_ -= dt;
+    if (computer_aim_left_ > 0.0 && options_.playback_speed > 0.0) return true;
+    const std::size_t seat =
+        rules::index(snooker_ ? snooker_->state().shooter : carom_->state().shooter);
+    const double own =
+        snooker_ ? snooker_players_[seat]->execution_noise : carom_players_[seat]->execution_noise;
+    const physics::Stroke k =
+        game::with_noise(match_decision_->stroke, options_.noise * own, noise_rng_);
+    match_decision_.reset();
+    play_match(k);
+    return true;
+}
+
+void Controller::apply_match_computer(const game::MatchDecision& d) {
+    try {
+        if (snooker_ && snooker_->phase() == game::MatchPhase::choose) {
+            snooker_->choose(d.after_foul.value_or(rules::AfterFoul::play));
+            last_words_ =
+                after_foul_words(*snooker_, d.after_foul.value_or(rules::AfterFoul::play));
+            orientations_.reset();
+            begin_turn();
+            return;
+        }
+        if (snooker_ && d.cue_pos) snooker_->place_cue_ball(*d.cue_pos);
+    } catch (const game::Refused& e) {
+        refusal_ = std::string("the computer player's decision was refused: ") + e.what();
+        return;
+    }
+    mirror_match();
+    if (d.nominate) manual_nomination_ = d.nominate;
+    aim_ = Aim{d.stroke.heading_deg, power_of_speed(d.stroke.speed), d.stroke.side, d.stroke.top,
+               d.stroke.elevation_deg};
+    refresh_preview();
+    match_decision_ = d;
+    computer_aim_left_ = options_.computer_aim_seconds;
 }
 
 render::GameLook Controller::look() const {
@@ -121,9 +196,9 @@ void Controller::mirror_match() {
                              m.state().cue_ball == rules::CueBall::in_hand, seed);
     } else {
         const game::CaromSession& m = *carom_;
-        session_ = mirror_of(m.config().table, m.config().params, m.config().names,
-                             m.state().positions, m.to_act().value_or(m.state().shooter), false,
-                             seed);
+        session_ =
+            mirror_of(m.config().table, m.config().params, m.config().names, m.state().positions,
+                      m.to_act().value_or(m.state().shooter), false, seed);
     }
 }
 
@@ -157,6 +232,19 @@ void Controller::begin_match_turn() {
     mirror_match();
     const bool shoot = snooker_ ? snooker_->phase() == game::MatchPhase::shoot
                                 : carom_->phase() == game::MatchPhase::shoot;
+    if (match_computer_to_act() && (snooker_ ? snooker_->to_act() : carom_->to_act())) {
+        // A computer seat: it decides on a worker thread (the session is not touched meanwhile).
+        if (snooker_) {
+            const auto decide = snooker_players_[rules::index(*snooker_->to_act())]->decide;
+            const game::SnookerSession* s = &*snooker_;
+            match_thinking_ = std::async(std::launch::async, [decide, s] { return decide(*s); });
+        } else {
+            const auto decide = carom_players_[rules::index(*carom_->to_act())]->decide;
+            const game::CaromSession* s = &*carom_;
+            match_thinking_ = std::async(std::launch::async, [decide, s] { return decide(*s); });
+        }
+        return;
+    }
     if (!shoot) return;
     aim_ = human_aim_;
     const auto& pos = session_.state().positions;
@@ -196,7 +284,7 @@ void Controller::nominate(std::optional<int> ball) {
         manual_nomination_.reset();
         return;
     }
-    if ( !snooker_->state().has(*ball) ||
+    if (!snooker_->state().has(*ball) ||
         (snooker_->state().colour_on && !physics::is_colour(*ball))) {
         refusal_ = snooker_->state().colour_on ? "After a red, nominate a colour."
                                                : "Nominate a ball on the table.";

@@ -67,10 +67,11 @@ std::string foul_reason(const game::SnookerSession& s, rules::SnookerFoul f,
         case rules::SnookerFoul::no_contact:
             return "the cue ball hit no ball; " + on + " was on";
         case rules::SnookerFoul::wrong_ball_first:
-            return fmt::format("{} was hit first; {} was on", first ? ball_words(*first) : "a ball",
-                               s.before().nominated && s.before().colour_on
-                                   ? "the nominated " + game::snooker_ball_name(*s.before().nominated)
-                                   : on);
+            return fmt::format(
+                "{} was hit first; {} was on", first ? ball_words(*first) : "a ball",
+                s.before().nominated && s.before().colour_on
+                    ? "the nominated " + game::snooker_ball_name(*s.before().nominated)
+                    : on);
         case rules::SnookerFoul::ball_not_on_potted:
             return potted_words(potted(shot)) + " went in, and not all of it was on";
         case rules::SnookerFoul::ball_off_table:
@@ -86,11 +87,12 @@ std::string foul_reason(const game::SnookerSession& s, rules::SnookerFoul f,
 std::string frame_end_words(const game::SnookerSession& s) {
     const rules::SnookerState& st = s.state();
     const Player w = *s.frame_winner();
-    std::string out = fmt::format(" {} wins the frame {}–{}.", s.name(w), st.score(w),
-                                  st.score(rules::other(w)));
+    std::string out =
+        fmt::format(" {} wins the frame {}–{}.", s.name(w), st.score(w), st.score(rules::other(w)));
     if (const std::optional<Player> m = s.match_winner())
-        out += fmt::format(" {} wins the match {}–{}.", s.name(*m), s.frames_won()[rules::index(*m)],
-                           s.frames_won()[rules::index(rules::other(*m))]);
+        out +=
+            fmt::format(" {} wins the match {}–{}.", s.name(*m), s.frames_won()[rules::index(*m)],
+                        s.frames_won()[rules::index(rules::other(*m))]);
     return out;
 }
 
@@ -116,7 +118,8 @@ std::string snooker_shot_words(const game::SnookerSession& s, const physics::Sho
     if (v.foul) {
         out = snooker_foul_words(s, v, shot) + ".";
         if (v.miss) out += " A miss.";
-        if (v.misses == 2) out += fmt::format(" {}: a third miss loses the frame.", s.name(striker));
+        if (v.misses == 2)
+            out += fmt::format(" {}: a third miss loses the frame.", s.name(striker));
     } else if (v.points_scored > 0) {
         out = fmt::format("{} pots {}: {}, break {}.", s.name(striker), potted_words(potted(shot)),
                           points(v.points_scored), v.state.break_points);
@@ -125,9 +128,10 @@ std::string snooker_shot_words(const game::SnookerSession& s, const physics::Sho
     }
     for (const rules::Respot& r : v.respotted)
         out += fmt::format(" The {} is re-spotted{}.", game::snooker_ball_name(r.ball),
-                           !r.spot                 ? " as near its spot as it can go"
-                           : *r.spot != r.ball     ? " on the " + game::snooker_ball_name(*r.spot) + " spot"
-                                                   : "");
+                           !r.spot ? " as near its spot as it can go"
+                           : *r.spot != r.ball
+                               ? " on the " + game::snooker_ball_name(*r.spot) + " spot"
+                               : "");
     if (v.frame_over) return out + frame_end_words(s);
     if (v.respotted_black)
         out += " The scores are level: the black is re-spotted, the cue ball in hand.";
@@ -165,8 +169,9 @@ std::vector<std::string> snooker_info(const game::SnookerSession& s, std::option
         lines.push_back(fmt::format("{} won the frame {}–{}", s.name(*s.frame_winner()),
                                     st.score(*s.frame_winner()),
                                     st.score(rules::other(*s.frame_winner()))));
-        lines.push_back(s.match_winner() ? fmt::format("{} wins the match", s.name(*s.match_winner()))
-                                         : "Next frame sets the balls up again");
+        lines.push_back(s.match_winner()
+                            ? fmt::format("{} wins the match", s.name(*s.match_winner()))
+                            : "Next frame sets the balls up again");
     } else if (s.phase() == game::MatchPhase::choose) {
         const Player offender = s.before().shooter;
         lines.push_back(fmt::format("Foul by {}: {} chooses", s.name(offender),
@@ -174,9 +179,11 @@ std::vector<std::string> snooker_info(const game::SnookerSession& s, std::option
         lines.push_back(fmt::format("Play from here, or ask {} to play again", s.name(offender)));
     } else {
         std::string on = "on: " + game::ball_on_name(s.ball_on());
-        if (st.free_ball) on = nom ? "free ball: the " + game::snooker_ball_name(*nom)
-                                   : "free ball: nominate any ball, or play " + game::ball_on_name(s.ball_on());
-        else if (nom) on += " (nominated: the " + game::snooker_ball_name(*nom) + ")";
+        if (st.free_ball)
+            on = nom ? "free ball: the " + game::snooker_ball_name(*nom)
+                     : "free ball: nominate any ball, or play " + game::ball_on_name(s.ball_on());
+        else if (nom)
+            on += " (nominated: the " + game::snooker_ball_name(*nom) + ")";
         lines.push_back(fmt::format("{} to play — {}", s.name(st.shooter), on));
         if (st.cue_ball == rules::CueBall::in_hand)
             lines.push_back("Ball in hand: place the cue ball in the D");
@@ -186,8 +193,8 @@ std::vector<std::string> snooker_info(const game::SnookerSession& s, std::option
                                 st.break_points, s.points_remaining()));
     for (Player p : {Player::A, Player::B})
         if (const int n = snookers_required(s, p); n > 0 && !s.frame_winner())
-            lines.push_back(fmt::format("{} needs snookers ({} more than remain)", s.name(p),
-                                        points(n)));
+            lines.push_back(
+                fmt::format("{} needs snookers ({} more than remain)", s.name(p), points(n)));
     if (s.config().best_of > 1)
         lines.push_back(fmt::format("Frames {}–{} (best of {})", s.frames_won()[0],
                                     s.frames_won()[1], s.config().best_of));
@@ -212,10 +219,10 @@ std::string snooker_aim_foul(const game::SnookerSession& s, std::optional<int> n
             on.insert(id);
     if (free) on.insert(*st.nominated);
     if (on.count(*first)) return "";
-    return fmt::format("Foul as aimed: the cue ball would hit {} first; {} is on.",
-                       ball_words(*first),
-                       st.colour_on && st.nominated ? "the nominated " + game::snooker_ball_name(*st.nominated)
-                                                    : game::ball_on_name(b));
+    return fmt::format(
+        "Foul as aimed: the cue ball would hit {} first; {} is on.", ball_words(*first),
+        st.colour_on && st.nominated ? "the nominated " + game::snooker_ball_name(*st.nominated)
+                                     : game::ball_on_name(b));
 }
 
 // ---- Three-cushion
@@ -229,8 +236,8 @@ std::string carom_shot_words(const game::CaromSession& s, const physics::Shot& s
                           number_word(v.cushions), v.state.run);
     } else if (v.foul) {
         static constexpr std::array<const char*, 4> reasons{
-            "the wrong cue ball was struck", "a ball left the table",
-            "a push or a double hit", "the opening stroke must hit the red first"};
+            "the wrong cue ball was struck", "a ball left the table", "a push or a double hit",
+            "the opening stroke must hit the red first"};
         out = fmt::format("Foul: {}.", reasons[static_cast<std::size_t>(v.fouls.front())]);
     } else {
         int cue = 0;
@@ -251,7 +258,8 @@ std::string carom_shot_words(const game::CaromSession& s, const physics::Shot& s
     const rules::CaromState& st = s.state();
     if (v.game_over) {
         if (v.winner)
-            out += fmt::format(" {} wins the game {}–{}.", s.name(*v.winner), st.scores[rules::index(*v.winner)],
+            out += fmt::format(" {} wins the game {}–{}.", s.name(*v.winner),
+                               st.scores[rules::index(*v.winner)],
                                st.scores[rules::index(rules::other(*v.winner))]);
         else
             out += fmt::format(" A draw, {}–{}, after the equalizing inning.", st.scores[0],

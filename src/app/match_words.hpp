@@ -23,8 +23,7 @@ std::string snooker_shot_words(const game::SnookerSession& s, const physics::Sho
 std::string after_foul_words(const game::SnookerSession& s, rules::AfterFoul choice);
 /// The information bar: who acts and what for, the ball on and the nomination, the break,
 /// the points remaining, snookers required, the frames.
-std::vector<std::string> snooker_info(const game::SnookerSession& s,
-                                      std::optional<int> nomination);
+std::vector<std::string> snooker_info(const game::SnookerSession& s, std::optional<int> nomination);
 /// "Foul as aimed: …" when the aim's first ball (from the preview's `events`) is not on,
 /// else empty.
 std::string snooker_aim_foul(const game::SnookerSession& s, std::optional<int> nomination,

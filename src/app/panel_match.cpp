@@ -91,7 +91,9 @@ void table_game_choice(NewGame& d, PanelState& st) {
         ImGui::RadioButton(labels[i], &game, i);
         remember(st, labels[i]);
     }
-    d.table = game == 2 ? TableGame::snooker : game == 3 ? TableGame::three_cushion : TableGame::pool;
+    d.table = game == 2   ? TableGame::snooker
+              : game == 3 ? TableGame::three_cushion
+                          : TableGame::pool;
     if (game < 2) d.game = game == 0 ? rules::Game::eight_ball : rules::Game::nine_ball;
 }
 

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "game/json_field.hpp"
+#include "game/match_player.hpp"
 #include "game/session.hpp"
 #include "physics/rack.hpp"
 
@@ -16,23 +17,11 @@ namespace {
 
 using rules::Player;
 
-physics::Stroke random_stroke(const CaromSession& s, physics::SplitMix64& rng) {
-    const int cue = s.cue_ball();
-    const int target = rng.below(2) == 0 ? physics::carom_ball::red : 1 - cue;
-    const physics::Vec2 to = s.state().positions.at(target) - s.state().positions.at(cue);
-    physics::Stroke k;
-    k.speed = 2.0 + 5.0 * rng.uniform();
-    k.heading_deg =
-        std::atan2(to.y, to.x) * 180.0 / std::numbers::pi + 40.0 * (rng.uniform() - 0.5);
-    k.side = 0.6 * (rng.uniform() - 0.5);
-    return k;
-}
-
 TEST(CaromSession, RandomPlayersFinishGamesAndEverySaveReadsBack) {
     CaromConfig c;
     c.options = {.target = 2, .equal_innings = true};
     CaromSession s(c);
-    physics::SplitMix64 rng(11);
+    CaromPlayer player = random_carom_player(11);
     int strokes = 0;
     for (int game = 0; game < 2; ++game) {
         EXPECT_EQ(s.state().starter, s.starter_of_game(game));
@@ -40,7 +29,9 @@ TEST(CaromSession, RandomPlayersFinishGamesAndEverySaveReadsBack) {
         while (!s.game_over() && strokes < 20000) {
             const Player p = *s.to_act();
             const int before = s.state().scores[rules::index(p)];
-            const rules::CaromVerdict& v = s.play(random_stroke(s, rng));
+            const MatchDecision d = player.decide(s);
+            apply(s, d, d.stroke);
+            const rules::CaromVerdict& v = *s.last_verdict();
             EXPECT_EQ(s.state().scores[rules::index(p)], before + (v.point ? 1 : 0));
             if (!v.game_over) {
                 EXPECT_EQ(*v.next_shooter, v.point ? p : rules::other(p));

@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "game/json_field.hpp"
+#include "game/match_player.hpp"
 #include "game/session.hpp"
 #include "physics/rack.hpp"
 
@@ -19,48 +20,14 @@ namespace {
 namespace sb = physics::snooker_ball;
 using rules::Player;
 
-// A random stroke at a ball on (any ball when none can be found), a random nomination.
-physics::Stroke random_stroke(const SnookerSession& s, physics::SplitMix64& rng) {
-    const rules::SnookerState& st = s.state();
-    std::vector<int> targets;
-    for (int id : st.on_table)
-        if (st.colour_on ? physics::is_colour(id) : st.reds() == 0 || physics::is_red(id))
-            targets.push_back(id);
-    if (targets.empty()) targets.assign(st.on_table.begin(), st.on_table.end());
-    const physics::Vec2 to =
-        st.positions.at(targets[rng.below(targets.size())]) - st.positions.at(sb::cue);
-    physics::Stroke k;
-    k.speed = 1.0 + 5.0 * rng.uniform();
-    k.heading_deg =
-        std::atan2(to.y, to.x) * 180.0 / std::numbers::pi + 10.0 * (rng.uniform() - 0.5);
-    k.side = 0.4 * (rng.uniform() - 0.5);
-    return k;
-}
-
-void place_in_d(SnookerSession& s, physics::SplitMix64& rng) {
-    const physics::SnookerMarkings& m = s.marks().marks;
-    for (;;) {
-        const double a = std::numbers::pi * (0.5 + rng.uniform()), r = m.d_radius * rng.uniform();
-        const physics::Vec2 p = m.d_centre() + physics::Vec2{r * std::cos(a), r * std::sin(a)};
-        if (!s.check_cue_ball(p)) return s.place_cue_ball(p);
-    }
-}
-
-// One stroke or choice of the random player; checks that the session saves and loads as is.
-void random_turn(SnookerSession& s, physics::SplitMix64& rng) {
-    if (s.phase() == MatchPhase::choose) {
-        s.choose(s.choices()[rng.below(s.choices().size())]);
-        return;
-    }
-    if (s.phase() == MatchPhase::place_cue_ball) place_in_d(s, rng);
-    if (s.state().colour_on) {
-        std::vector<int> colours;
-        for (int id : s.state().on_table)
-            if (physics::is_colour(id)) colours.push_back(id);
-        s.nominate(colours[rng.below(colours.size())]);
-    }
+// One turn of the random player (game/match_player.hpp): a stroke, or the after-foul choice.
+void random_turn(SnookerSession& s, SnookerPlayer& player) {
     const int before = s.state().score(Player::A) + s.state().score(Player::B);
-    const rules::SnookerVerdict& v = s.play(random_stroke(s, rng));
+    const bool stroke = s.phase() != MatchPhase::choose;
+    const MatchDecision d = player.decide(s);
+    apply(s, d, d.stroke);
+    if (!stroke) return;
+    const rules::SnookerVerdict& v = *s.last_verdict();
     EXPECT_EQ(v.state.score(Player::A) + v.state.score(Player::B),
               before + v.points_scored + v.foul_points);
 }
@@ -70,7 +37,7 @@ TEST(SnookerSession, RandomPlayersFinishAMatchAndEverySaveReadsBack) {
     c.best_of = 3;
     c.names = {"Ann", "Bob"};
     SnookerSession s(c);
-    physics::SplitMix64 rng(5);
+    SnookerPlayer player = random_snooker_player(5);
     int turns = 0;
     while (s.phase() != MatchPhase::match_over && turns < 8000) {
         if (s.phase() == MatchPhase::frame_over) {
@@ -79,7 +46,7 @@ TEST(SnookerSession, RandomPlayersFinishAMatchAndEverySaveReadsBack) {
             EXPECT_EQ(s.state().shooter, s.breaker_of_frame(s.frame_number()));
             continue;
         }
-        random_turn(s, rng);
+        random_turn(s, player);
         ++turns;
         if (turns % 25 == 0) {
             const SnookerSession back = SnookerSession::from_json(s.to_json());
