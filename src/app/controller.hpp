@@ -185,6 +185,13 @@ class Controller {
     void choose_after_foul(rules::AfterFoul choice);
     /// Snooker: the next frame; three-cushion: the next game.
     void next_frame();
+    /// The last stroke of a match and where its cue ball lay (the cue's stroke drawn before
+    /// playback); empty in pool (the session's history has it) and before the first stroke.
+    struct StrokeShown {
+        physics::Vec2 cue_ball;
+        physics::Stroke stroke;
+    };
+    const std::optional<StrokeShown>& match_stroke() const { return match_stroke_; }
 
   private:
     void play_match(const physics::Stroke& stroke);
@@ -247,6 +254,7 @@ class Controller {
     std::array<std::optional<game::CaromPlayer>, 2> carom_players_;
     std::future<game::MatchDecision> match_thinking_;
     std::optional<game::MatchDecision> match_decision_;  ///< decided, shown before the strike
+    std::optional<StrokeShown> match_stroke_;
 };
 
 }  // namespace app

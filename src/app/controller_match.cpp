@@ -110,6 +110,7 @@ void Controller::start_snooker(game::SnookerSession match, ControllerOptions opt
         if (snooker_players_[i]) options_.players[i] = kinds[i];
     }
     snooker_ = std::move(match);
+    match_stroke_.reset();
     begin_turn();
 }
 
@@ -122,6 +123,7 @@ void Controller::start_carom(game::CaromSession match, ControllerOptions options
         if (carom_players_[i]) options_.players[i] = kinds[i];
     }
     carom_ = std::move(match);
+    match_stroke_.reset();
     begin_turn();
 }
 
@@ -326,6 +328,7 @@ void Controller::next_frame() {
 
 void Controller::play_match(const physics::Stroke& stroke) {
     std::vector<std::string> info_before = match_info();
+    const physics::Vec2 cue_at = session_.state().positions.at(cue_ball_id());
     const physics::Shot* shot = nullptr;
     if (snooker_ && snooker_->phase() == game::MatchPhase::choose) {
         refusal_ = fmt::format("First {} chooses: play from here, or ask {} to play again.",
@@ -347,6 +350,7 @@ void Controller::play_match(const physics::Stroke& stroke) {
         return;
     }
     refusal_.clear();
+    match_stroke_ = StrokeShown{cue_at, stroke};
     info_at_strike_ = std::move(info_before);
     words_at_strike_ = last_words_;
     replaying_ = false;

@@ -305,7 +305,8 @@ void play_buttons(const Controller& c, const Settings& settings, PanelState& st,
                   PanelActions& out) {
     ImGui::Separator();
     if (auto g = aim_guide_combo(st, settings.aim_guide)) out.aim_guide = g;
-    if (c.human_to_act() && c.session().phase() == game::Phase::shoot) {
+    const bool choosing = c.snooker() && c.snooker()->phase() == game::MatchPhase::choose;
+    if (c.human_to_act() && c.session().phase() == game::Phase::shoot && !choosing) {
         if (c.snooker() || c.carom()) {  // no hint: the AI does not play these games yet
             out.strike = full_button(st, "Strike");
         } else {

@@ -68,7 +68,7 @@ MatchDecision random_carom(const CaromSession& s, physics::SplitMix64& rng) {
     const rules::CaromState& st = s.state();
     const int cue = s.cue_ball();
     const int other = cue == physics::carom_ball::white ? physics::carom_ball::yellow
-                                                         : physics::carom_ball::white;
+                                                        : physics::carom_ball::white;
     const int target = st.opening || rng.below(2) == 0 ? physics::carom_ball::red : other;
     MatchDecision d;
     d.stroke = random_stroke_at(st.positions.at(cue), st.positions.at(target), 40.0, rng);

@@ -6,6 +6,7 @@
 #include "app/controller.hpp"
 #include "app/match_words.hpp"
 #include "app_support.hpp"
+#include "game/json_field.hpp"
 
 namespace app {
 namespace {
@@ -111,6 +112,19 @@ TEST(MatchController, RandomSeatsPlayAThreeCushionGameToTheEnd) {
     ASSERT_TRUE(c.carom()->game_over());
     c.next_frame();
     EXPECT_EQ(c.carom()->game_number(), 1);
+}
+
+TEST(MatchWords, SnookersRequiredWhenBehindByMoreThanRemains) {
+    nlohmann::json doc = nlohmann::json::parse(snooker_match().to_json());
+    doc["state"]["scores"] = {{"A", 10}, {"B", 160}};
+    const game::SnookerSession s = game::SnookerSession::from_json(doc.dump());
+    EXPECT_EQ(snookers_required(s, rules::Player::A), 3);  // 150 behind, 147 remaining
+    EXPECT_EQ(snookers_required(s, rules::Player::B), 0);
+    const std::vector<std::string> info = snooker_info(s, std::nullopt);
+    EXPECT_NE(std::find(info.begin(), info.end(), "Ann needs snookers (3 points more than remain)"),
+              info.end());
+    EXPECT_NE(std::find(info.begin(), info.end(), "Ann 10 – 160 Bob · break 0 · 147 remaining"),
+              info.end());
 }
 
 }  // namespace
