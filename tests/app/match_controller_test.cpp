@@ -114,6 +114,17 @@ TEST(MatchController, RandomSeatsPlayAThreeCushionGameToTheEnd) {
     EXPECT_EQ(c.carom()->game_number(), 1);
 }
 
+TEST(MatchController, ANewPoolGameAfterSnookerIsPoolAgain) {
+    Controller c(app_test::new_session(), options());
+    c.start_snooker(snooker_match(), options());
+    c.replace(app_test::new_session(rules::Game::nine_ball), options());
+    EXPECT_FALSE(c.snooker());
+    EXPECT_EQ(c.look(), render::GameLook::pool);
+    EXPECT_EQ(c.cue_ball_id(), 0);
+    EXPECT_EQ(c.session().config().game, rules::Game::nine_ball);
+    EXPECT_EQ(c.info().front(), "Ann to break");
+}
+
 TEST(MatchWords, SnookersRequiredWhenBehindByMoreThanRemains) {
     nlohmann::json doc = nlohmann::json::parse(snooker_match().to_json());
     doc["state"]["scores"] = {{"A", 10}, {"B", 160}};
