@@ -3,6 +3,9 @@
 // from the aim, the after-foul choice, computer seats through app/seats.hpp, the words.
 #include <gtest/gtest.h>
 
+#include <functional>
+#include <set>
+
 #include "app/controller.hpp"
 #include "app/match_words.hpp"
 #include "app_support.hpp"
@@ -136,6 +139,43 @@ TEST(MatchWords, SnookersRequiredWhenBehindByMoreThanRemains) {
               info.end());
     EXPECT_NE(std::find(info.begin(), info.end(), "Ann 10 – 160 Bob · break 0 · 147 remaining"),
               info.end());
+}
+
+// The words of the first stroke from the start (after an opening that hits the red and scores
+// nothing) whose verdict `want` accepts, searching headings, speeds and side spin.
+std::string carom_words_for(
+    const std::function<bool(const rules::CaromVerdict&, const physics::Shot&)>& want) {
+    game::CaromSession start = carom_game();
+    for (double heading = 0.0; heading < 360.0; heading += 0.5)
+        for (double speed : {3.0, 5.0, 7.0})
+            for (double side : {0.0, 0.3, -0.3}) {
+                game::CaromSession s = start;
+                physics::Stroke k;
+                k.heading_deg = heading;
+                k.speed = speed;
+                k.side = side;
+                const rules::CaromVerdict& v = s.play(k);
+                if (want(v, *s.last_shot())) return carom_shot_words(s, *s.last_shot());
+            }
+    return "none found";
+}
+
+TEST(MatchWords, ThreeCushionSaysHowManyCushionsCameBeforeTheSecondBall) {
+    const std::string point =
+        carom_words_for([](const rules::CaromVerdict& v, const physics::Shot&) {
+            return v.point && v.cushions == 3;
+        });
+    EXPECT_EQ(point, "Point: three cushions before the second ball. Run 1.");
+    // Both object balls met (counted here from the events), two cushions before the second.
+    const std::string two =
+        carom_words_for([](const rules::CaromVerdict& v, const physics::Shot& shot) {
+            std::set<int> met;
+            for (const physics::Event& e : shot.events())
+                if (e.type == physics::EventType::ball_ball && e.involves(0))
+                    met.insert(e.ball(0) == 0 ? e.ball(1) : e.ball(0));
+            return !v.foul && met.size() == 2 && v.cushions == 2;
+        });
+    EXPECT_EQ(two, "No point: only two cushions before the second ball. Bob to play.");
 }
 
 }  // namespace
