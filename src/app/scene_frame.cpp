@@ -116,6 +116,11 @@ SceneFrame build_scene(const Controller& c, AimGuide aim_guide,
         h.pos = {static_cast<float>(at.x), static_cast<float>(at.y)};
         h.legal = !refused;
         h.kitchen_only = in_hand == rules::BallInHand::kitchen;
+        if (const game::SnookerSession* s = c.snooker()) {
+            const physics::SnookerMarkings& m = s->marks().marks;
+            h.d_only = glm::vec3(static_cast<float>(m.baulk_x), static_cast<float>(m.d_centre().y),
+                                 static_cast<float>(m.d_radius));
+        }
         f.ball_in_hand = h;
     }
     return f;

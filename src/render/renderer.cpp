@@ -857,6 +857,12 @@ void Renderer::Impl::draw_ball_in_hand_marks(const BallInHandView& h, const Pass
         add_ribbon(head_string, {{L / 4, 0.0f}, {L / 4, W}}, 0.0015f, 0.0006f, {0.9f, 0.95f, 1.0f});
         draw_solid(head_string, false, 0.5f, p.view_proj, p.eye);
     }
+    if (h.d_only) {
+        std::vector<SolidVertex> d;
+        add_half_disc(d, {h.d_only->x, h.d_only->y}, h.d_only->z, 1.5707963f, 4.7123890f, 0.0005f,
+                      {0.85f, 0.92f, 1.0f});
+        draw_solid(d, false, 0.07f, p.view_proj, p.eye);
+    }
     std::vector<SolidVertex> ring;
     add_ring(ring, h.pos, radius * 1.3f, 0.003f, 0.0007f, h.legal ? glm::vec3(0.95f) : kRefused);
     draw_solid(ring, false, 0.85f, p.view_proj, p.eye);

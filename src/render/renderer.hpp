@@ -63,6 +63,8 @@ struct BallInHandView {
     glm::vec2 pos{0.0f};        ///< where the cue ball would go (unit: m), table frame
     bool legal = true;          ///< false: drawn tinted red (overlaps a ball, off the cloth, ...)
     bool kitchen_only = false;  ///< true: the area behind the head string (x < L/4) is shaded
+    /// Snooker: the D is shaded (x of the baulk line, y of its centre, radius; unit: m).
+    std::optional<glm::vec3> d_only;
 };
 
 /// Everything one frame shows. Spans must stay valid during draw().

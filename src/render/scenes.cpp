@@ -216,7 +216,7 @@ DemoScene ball_in_hand_scene(float aspect) {
         return b.id == 0 || std::find(s.tray.begin(), s.tray.end(), b.id) != s.tray.end();
     });
     const float L = static_cast<float>(s.table.length()), W = static_cast<float>(s.table.width());
-    s.ball_in_hand = BallInHandView{{0.14f * L, 0.58f * W}, false, true};
+    s.ball_in_hand = BallInHandView{{0.14f * L, 0.58f * W}, false, true, std::nullopt};
     return s;
 }
 
