@@ -67,9 +67,9 @@ std::optional<int> pocket_in_direction(const physics::Table& table, physics::Vec
 }
 
 // The cue ball's velocity just before the contact at `events[contact]`.
-physics::Vec2 cue_incoming(const physics::Shot& shot, std::size_t contact) {
+physics::Vec2 cue_incoming(const physics::Shot& shot, std::size_t contact, int cue_id) {
     const double t = shot.events()[contact].time;
-    return shot.state_at(0, t - 1e-9 * std::max(1.0, t)).vel;
+    return shot.state_at(cue_id, t - 1e-9 * std::max(1.0, t)).vel;
 }
 
 PathEnd end_of(const physics::Event* next) {
@@ -100,29 +100,30 @@ AimPreview preview_aim(const physics::Table& table, const physics::Params& param
     options.max_events = 4000;  // the guide needs the first contacts only
     const physics::Shot shot = physics::simulate(table, params, balls, &stroke, options);
     const auto& events = shot.events();
+    const int cue_id = stroke.ball;  // 0, or a carom player's own cue ball
     out.events = events;
     std::size_t contact = events.size();
     for (std::size_t i = 0; i < events.size(); ++i)
-        if (events[i].type == physics::EventType::ball_ball && events[i].involves(0)) {
+        if (events[i].type == physics::EventType::ball_ball && events[i].involves(cue_id)) {
             contact = i;
             break;
         }
     if (contact == events.size()) {  // hits nothing: where the cue ball goes
-        out.view.cue_path = sample_path(shot, 0, 0.0, free_path_time);
+        out.view.cue_path = sample_path(shot, cue_id, 0.0, free_path_time);
         return out;
     }
     const physics::Event& hit = events[contact];
-    const int slot = hit.ball(0) == 0 ? 0 : 1;
+    const int slot = hit.ball(0) == cue_id ? 0 : 1;
     const physics::EventBall& cue = hit.balls[static_cast<std::size_t>(slot)];
     const physics::EventBall& object = hit.balls[static_cast<std::size_t>(1 - slot)];
     out.first_ball = object.id;
-    out.view.cue_path = sample_path(shot, 0, 0.0, hit.time);
+    out.view.cue_path = sample_path(shot, cue_id, 0.0, hit.time);
     out.view.cue_path.push_back(to_glm(cue.pos));
     out.view.ghost = to_glm(cue.pos);
 
     out.object_at = to_glm(object.pos);
     out.object_dir = unit(object.vel);
-    out.cue_dir = unit(cue_incoming(shot, contact));
+    out.cue_dir = unit(cue_incoming(shot, contact, cue_id));
     const physics::Event* next = next_collision(shot, contact, object.id);
     out.object_end = end_of(next);
     if (next && next->time > hit.time + object_max_time) out.object_end = PathEnd::none;
@@ -131,10 +132,10 @@ AimPreview preview_aim(const physics::Table& table, const physics::Params& param
         sample_path(shot, object.id, hit.time, std::min(object_end, hit.time + object_max_time));
     if (next && next->type == physics::EventType::pocket)
         out.view.object_path.push_back(to_glm(next->balls[0].pos));
-    const physics::Event* cue_next = next_collision(shot, contact, 0);
+    const physics::Event* cue_next = next_collision(shot, contact, cue_id);
     const double cue_end =
         std::min(hit.time + cue_after_time, cue_next ? cue_next->time : hit.time + cue_after_time);
-    out.view.cue_after = sample_path(shot, 0, hit.time, cue_end);
+    out.view.cue_after = sample_path(shot, cue_id, hit.time, cue_end);
 
     for (std::size_t i = contact + 1; i < events.size(); ++i)
         if (events[i].type == physics::EventType::pocket && events[i].involves(object.id)) {

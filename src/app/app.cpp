@@ -24,6 +24,7 @@
 #include "app/game_setup.hpp"
 #include "app/imgui_setup.hpp"
 #include "app/input.hpp"
+#include "app/match_setup.hpp"
 #include "app/painter.hpp"
 #include "app/panel.hpp"
 #include "app/panel_layout.hpp"
@@ -55,7 +56,8 @@ audio::Listener listener_of(const render::Camera& c) {
 
 glm::vec2 cue_ball_at(const Controller& c) {
     for (const physics::BallState& b : c.balls_now())
-        if (b.id == 0) return {static_cast<float>(b.pos.x), static_cast<float>(b.pos.y)};
+        if (b.id == c.cue_ball_id())
+            return {static_cast<float>(b.pos.x), static_cast<float>(b.pos.y)};
     const physics::Vec2 h = c.session().table().head_spot();
     return {static_cast<float>(h.x), static_cast<float>(h.y)};
 }
@@ -222,6 +224,9 @@ struct Table {
         if (a.push_out) controller.set_push_out(*a.push_out);
         if (a.call_safety) controller.call_safety();
         if (a.clear_call) controller.clear_call();
+        if (a.after_foul) controller.choose_after_foul(*a.after_foul);
+        if (a.nominate) controller.nominate(*a.nominate);
+        if (a.next_frame) controller.next_frame();
         if (a.new_game) {
             s.game = a.new_game->game;
             s.names = a.new_game->names;
@@ -232,6 +237,8 @@ struct Table {
             opts.players = s.players;
             opts.seed = fresh_seed();
             try {
+                if (a.new_game->table != TableGame::pool)
+                    return start_match(controller, *a.new_game, opts);
                 if (a.new_game->practice) return start_practice(s.game);
                 controller.replace(game::Session(new_game_config(s, opts.seed)), opts);
             } catch (const std::exception& e) {
@@ -256,10 +263,12 @@ struct Table {
     }
 
     void save_and_close() {
-        // Practice is not a game: the game saved before it stays as it was.
-        const std::string err = controller.practicing()
-                                    ? std::string()
-                                    : save_on_exit(controller.session(), setup.autosave_path);
+        // Practice is not a game, and a snooker or three-cushion match is not saved on exit:
+        // the pool game saved before either stays as it was.
+        const bool pool_game =
+            !controller.practicing() && !controller.snooker() && !controller.carom();
+        const std::string err =
+            !pool_game ? std::string() : save_on_exit(controller.session(), setup.autosave_path);
         if (!err.empty())
             std::fprintf(stderr, "coolaaber: the game was not saved: %s\n", err.c_str());
         if (setup.settings_path.empty()) return;
@@ -272,9 +281,10 @@ struct Table {
 };
 
 // What the painter's table is built from.
-std::string table_key(const game::Session& s) {
+std::string table_key(const Controller& c) {
+    const game::Session& s = c.session();
     return game::to_json(s.config().table).dump() +
-           fmt::format("{}", s.config().params.ball_radius);
+           fmt::format("{} {}", s.config().params.ball_radius, static_cast<int>(c.look()));
 }
 
 // Where each ball is seen in the table view (the status file's test hook).
@@ -409,10 +419,11 @@ int run_window(const AppOptions& options) {
         std::optional<Painter> painter;
         std::string painted;  // the table the painter draws (a pasted link may bring another)
         auto paint_the_session_table = [&] {
-            if (table_key(t.controller.session()) == painted) return;
-            painted = table_key(t.controller.session());
+            if (table_key(t.controller) == painted) return;
+            painted = table_key(t.controller);
             painter.emplace(t.controller.session().table(),
-                            t.controller.session().config().params.ball_radius);
+                            t.controller.session().config().params.ball_radius,
+                            t.controller.look());
         };
         paint_the_session_table();
         float dpi = 0.0f;

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "app/cue_clearance.hpp"
+#include "app/match_words.hpp"
 #include "app/plain_words.hpp"
 #include "app/seats.hpp"
 #include "game/stroke_noise.hpp"
@@ -67,6 +68,8 @@ Controller::~Controller() {
 void Controller::replace(game::Session session, ControllerOptions options) {
     stop_thinking();
     practice_.reset();
+    snooker_.reset();
+    carom_.reset();
     session_ = std::move(session);
     options_ = std::move(options);
     for (std::size_t i = 0; i < 2; ++i)
@@ -88,18 +91,19 @@ physics::Stroke Controller::stroke_of(const Aim& a) const {
     k.side = a.side;
     k.top = a.top;
     k.elevation_deg = a.elevation_deg;
+    k.ball = cue_ball_id();
     return played(k);
 }
 
 physics::Stroke Controller::played(const physics::Stroke& stroke) const {
-    const auto cue = session_.state().positions.find(0);
+    const auto cue = session_.state().positions.find(stroke.ball);
     if (cue == session_.state().positions.end()) return stroke;
     return over_the_rail(session_.table(), session_.config().params.ball_radius, cue->second,
                          stroke);
 }
 
 double Controller::forced_elevation_deg() const {
-    const auto cue = session_.state().positions.find(0);
+    const auto cue = session_.state().positions.find(cue_ball_id());
     if (cue == session_.state().positions.end()) return 0.0;
     return rail_forced_elevation_deg(session_.table(), session_.config().params.ball_radius,
                                      cue->second, stroke_of(aim_));
@@ -127,11 +131,13 @@ void Controller::play_shared(const physics::Stroke& stroke) {
 }
 
 bool Controller::busy() const {
-    return playback_.moving() || thinking_.valid() || computer_decision_.has_value();
+    return playback_.moving() || thinking_.valid() || computer_decision_.has_value() ||
+           match_thinking_.valid() || match_decision_.has_value();
 }
 
 bool Controller::human_to_act() const {
     if (busy() || !settled_) return false;
+    if (snooker_ || carom_) return !match_computer_to_act();
     const std::optional<rules::Player> p = session_.to_act();
     return p && !computers_[rules::index(*p)];
 }
@@ -156,6 +162,7 @@ rules::Call Controller::call() const {
 // ---- Turns
 
 void Controller::begin_turn() {
+    if (snooker_ || carom_) return begin_match_turn();
     manual_call_.reset();
     preview_.reset();
     const std::optional<rules::Player> p = session_.to_act();
@@ -233,7 +240,11 @@ void Controller::refresh_preview() {
     preview_ = preview_aim(session_.table(), session_.config().params, balls, stroke_of(aim_));
     // The rules' own verdict on the shot as aimed; only what the player can see coming is
     // said (where the cue ball meets its first ball), not what the exact simulation foresees.
-    if (practice_) return;  // no rules, no fouls
+    if (practice_ || carom_) return;  // no rules, no fouls; carom: no foul to see coming
+    if (snooker_) {
+        aim_foul_ = snooker_aim_foul(*snooker_, nomination(), preview_->events);
+        return;
+    }
     const rules::Verdict v = rules::judge(session_.ruleset(), session_.state(), preview_->events);
     if (v.has(rules::Foul::bad_play_from_kitchen) && preview_->first_ball)
         aim_foul_ = fmt::format(
@@ -246,6 +257,7 @@ void Controller::refresh_preview() {
 
 void Controller::play(const physics::Stroke& stroke) {
     if (practice_) return play_practice(stroke);
+    if (snooker_ || carom_) return play_match(stroke);
     std::vector<std::string> info_before = info_lines(session_, call());
     const game::ShotRecord* record = nullptr;
     try {
@@ -275,6 +287,7 @@ std::vector<std::string> Controller::info() const {
         return {"Practice: drag any ball with the left button",
                 "Try again puts back the position "
                 "before the last shot"};
+    if (snooker_ || carom_) return settled_ && !replaying() ? match_info() : info_at_strike_;
     return settled_ && !replaying() ? info_lines(session_, call()) : info_at_strike_;
 }
 
@@ -292,6 +305,7 @@ std::vector<int> Controller::tray() const {
 void Controller::finish_shot() {
     settled_ = true;
     if (practice_) return finish_practice_shot();
+    if (snooker_ || carom_) return finish_match_shot();
     if (!session_.history().empty()) last_words_ = shot_words(session_, session_.history().back());
     const bool all_computers = computers_[0] && computers_[1];
     const game::Phase ph = session_.phase();
@@ -313,6 +327,7 @@ void Controller::update(double dt) {
         if (!playback_.moving() && !settled_) finish_shot();
         return;
     }
+    if ((snooker_ || carom_) && update_match_computer(dt)) return;
     if (thinking_.valid() &&
         thinking_.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
         game::Decision d;
@@ -342,7 +357,7 @@ void Controller::update(double dt) {
 }
 
 void Controller::hint() {
-    if (!human_to_act() || session_.phase() != game::Phase::shoot) return;
+    if (!human_to_act() || session_.phase() != game::Phase::shoot || snooker_ || carom_) return;
     hint_player_ = make_computer(
         "ai:5", derive(options_.seed, 100 + static_cast<std::uint64_t>(hints_++)), options_.noise);
     game::Player* player = hint_player_.get();
@@ -376,6 +391,7 @@ void Controller::launch_computer() {
 
 void Controller::wait_for_computer() const {
     if (thinking_.valid()) thinking_.wait();
+    if (match_thinking_.valid()) match_thinking_.wait();
 }
 
 void Controller::stop_thinking() {
@@ -383,6 +399,9 @@ void Controller::stop_thinking() {
     thinking_ = {};
     hinting_ = false;
     computer_decision_.reset();
+    if (match_thinking_.valid()) match_thinking_.wait();
+    match_thinking_ = {};
+    match_decision_.reset();
 }
 
 void Controller::apply_computer(const game::Decision& d) {
@@ -440,6 +459,20 @@ void Controller::set_elevation(double deg) {
 }
 
 bool Controller::move_cue_ball(physics::Vec2 pos) {
+    if (snooker_) {
+        if (!human_to_act() || snooker_->phase() != game::MatchPhase::shoot ||
+            snooker_->state().cue_ball != rules::CueBall::in_hand)
+            return false;
+        if (std::optional<std::string> why = snooker_->check_cue_ball(pos)) {
+            refusal_ = *why;
+            return false;
+        }
+        snooker_->place_cue_ball(pos);
+        mirror_match();
+        refusal_.clear();
+        refresh_preview();
+        return true;
+    }
     if (!human_to_act() || session_.ball_in_hand() == rules::BallInHand::none) return false;
     if (std::string why = placement_words(session_, pos); !why.empty()) {
         refusal_ = std::move(why);
@@ -452,6 +485,13 @@ bool Controller::move_cue_ball(physics::Vec2 pos) {
 }
 
 void Controller::click_table(physics::Vec2 pos) {
+    if (snooker_ && human_to_act() && snooker_->may_nominate()) {  // a click on a ball nominates it
+        const double R = snooker_->config().params.ball_radius;
+        for (int id : snooker_->state().on_table)
+            if (physics::norm(snooker_->state().positions.at(id) - pos) <= 1.3 * R)
+                return nominate(id);
+        return;
+    }
     if (!human_to_act() || !calls_count(session_)) return;
     const double R = session_.config().params.ball_radius;
     const std::vector<int> legal = legal_targets(session_);
@@ -544,6 +584,8 @@ void Controller::replay() {
 }
 
 void Controller::restart() {
+    if (snooker_) return start_snooker(game::SnookerSession(snooker_->config()), options_);
+    if (carom_) return start_carom(game::CaromSession(carom_->config()), options_);
     if (practice_) {  // a new rack to practise on
         const game::Session& s = session_;
         start_practice(game::Practice(s.config().game, s.config().table, s.config().params,

@@ -18,10 +18,13 @@
 #include "app/aim_preview.hpp"
 #include "app/ball_orientations.hpp"
 #include "app/playback.hpp"
+#include "game/carom_session.hpp"
+#include "game/match_player.hpp"
 #include "game/player.hpp"
 #include "game/practice.hpp"
 #include "game/session.hpp"
 #include "physics/rack.hpp"
+#include "render/renderer.hpp"
 
 namespace app {
 
@@ -76,7 +79,7 @@ class Controller {
     bool busy() const;
     /// The human at the keyboard may act now (aim, strike, place, call, choose).
     bool human_to_act() const;
-    bool computer_thinking() const { return thinking_.valid(); }
+    bool computer_thinking() const { return thinking_.valid() || match_thinking_.valid(); }
     /// Blocks until a computer player thinking now has decided (headless use and tests; the
     /// decision is taken in by the next update()).
     void wait_for_computer() const;
@@ -126,7 +129,7 @@ class Controller {
     bool move_cue_ball(physics::Vec2 pos);
     /// Why the cue ball in hand may not go to `pos`, or empty.
     std::optional<std::string> check_cue_ball(physics::Vec2 pos) const {
-        return session_.check_cue_ball(pos);
+        return snooker_ ? snooker_->check_cue_ball(pos) : session_.check_cue_ball(pos);
     }
     /// A click on the table at `pos` (unit: m): on an object ball, calls it; near a pocket,
     /// calls that pocket (for the called ball, or the proposed one).
@@ -162,7 +165,50 @@ class Controller {
     /// Practice: the position before the last shot again.
     void try_again();
 
+    // ---- Snooker and three-cushion (docs/app.md, "Snooker and three-cushion"): the match
+    // session holds the game; session() mirrors its table (the balls, the striker, a cue ball in
+    // hand) so that drawing, aiming and the aim guide work as in pool. Both seats are human.
+    /// Seats whose kind has a player for the game (app/seats.hpp: snooker_computer,
+    /// carom_computer) are played by it; the others are human.
+    void start_snooker(game::SnookerSession match, ControllerOptions options);
+    void start_carom(game::CaromSession match, ControllerOptions options);
+    const game::SnookerSession* snooker() const { return snooker_ ? &*snooker_ : nullptr; }
+    const game::CaromSession* carom() const { return carom_ ? &*carom_ : nullptr; }
+    /// The balls and cloth marks to draw.
+    render::GameLook look() const;
+    /// The ball the stroke strikes: 0, or the yellow (1) of three-cushion's second player.
+    int cue_ball_id() const { return carom_ ? carom_->cue_ball() : 0; }
+    /// Snooker: the nomination the next stroke will have: the player's own, else the colour
+    /// (or free ball) the aim meets first; empty when nothing is nominated.
+    std::optional<int> nomination() const;
+    bool nomination_is_manual() const { return manual_nomination_.has_value(); }
+    /// Snooker: nominates `ball` (a click on it, or the panel's list); empty: back to the
+    /// nomination proposed from the aim.
+    void nominate(std::optional<int> ball);
+    /// Snooker: the incoming player's choice after a foul.
+    void choose_after_foul(rules::AfterFoul choice);
+    /// Snooker: the next frame; three-cushion: the next game.
+    void next_frame();
+    /// The last stroke of a match and where its cue ball lay (the cue's stroke drawn before
+    /// playback); empty in pool (the session's history has it) and before the first stroke.
+    struct StrokeShown {
+        physics::Vec2 cue_ball;
+        physics::Stroke stroke;
+    };
+    const std::optional<StrokeShown>& match_stroke() const { return match_stroke_; }
+
   private:
+    void play_match(const physics::Stroke& stroke);
+    void finish_match_shot();
+    /// A computer seat's turn in a match: thinking, then its aim shown, then the stroke; false
+    /// when there is none.
+    bool update_match_computer(double dt);
+    void apply_match_computer(const game::MatchDecision& d);
+    bool match_computer_to_act() const;
+    void mirror_match();
+    void begin_match_turn();
+    std::vector<std::string> match_info() const;
+    physics::Vec2 default_d_spot() const;
     void play_practice(const physics::Stroke& stroke);
     void finish_practice_shot();
     void mirror_practice();
@@ -207,6 +253,14 @@ class Controller {
     std::string aim_foul_;
     int shot_serial_ = 0;
     std::optional<game::Practice> practice_;
+    std::optional<game::SnookerSession> snooker_;
+    std::optional<game::CaromSession> carom_;
+    std::optional<int> manual_nomination_;  ///< the player's own nomination
+    std::array<std::optional<game::SnookerPlayer>, 2> snooker_players_;  ///< computer seats
+    std::array<std::optional<game::CaromPlayer>, 2> carom_players_;
+    std::future<game::MatchDecision> match_thinking_;
+    std::optional<game::MatchDecision> match_decision_;  ///< decided, shown before the strike
+    std::optional<StrokeShown> match_stroke_;
 };
 
 }  // namespace app

@@ -46,8 +46,10 @@ void create_imgui() {
     io.IniFilename = nullptr;  // the panel's layout is fixed; nothing to remember
     const char* font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
     std::error_code ec;
+    // Latin-1 and the dashes the game's sentences use ("Foul: 4 points to Bob — ...", "3–2").
+    static const ImWchar glyphs[] = {0x0020, 0x00FF, 0x2013, 0x2014, 0};
     if (std::filesystem::exists(font, ec))
-        io.Fonts->AddFontFromFileTTF(font, font_size * font_oversampling);
+        io.Fonts->AddFontFromFileTTF(font, font_size * font_oversampling, nullptr, glyphs);
     ImGui::GetStyle() = base_style();
     io.FontGlobalScale = 1.0f / atlas_scale();
 }

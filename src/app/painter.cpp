@@ -8,7 +8,18 @@
 
 namespace app {
 
-Painter::Painter(const physics::Table& table, double ball_radius) : renderer_(table, ball_radius) {}
+namespace {
+
+render::RenderSettings with_look(render::GameLook look) {
+    render::RenderSettings s;
+    s.look = look;
+    return s;
+}
+
+}  // namespace
+
+Painter::Painter(const physics::Table& table, double ball_radius, render::GameLook look)
+    : renderer_(table, ball_radius, with_look(look)) {}
 
 void Painter::resize(int width, int height, int panel_width) {
     width = std::max(width, 64);

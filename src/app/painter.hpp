@@ -14,7 +14,8 @@ namespace app {
 
 class Painter {
   public:
-    Painter(const physics::Table& table, double ball_radius);
+    Painter(const physics::Table& table, double ball_radius,
+            render::GameLook look = render::GameLook::pool);
     /// The window's size in pixels (the panel, `panel_width` px at the right, included).
     void resize(int width, int height, int panel_width);
     /// Draws the table into the view at the left (width − panel). While the camera moves

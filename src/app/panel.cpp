@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "app/panel_match.hpp"
+#include "app/panel_widgets.hpp"
 #include "app/plain_words.hpp"
 #include "app/seats.hpp"
 
@@ -13,36 +15,8 @@ namespace app {
 
 namespace {
 
-const ImVec4 accent{0.95f, 0.80f, 0.35f, 1.0f};
-const ImVec4 warning{1.0f, 0.45f, 0.40f, 1.0f};
-
-// Remembers where the last widget was drawn, under `label`.
-void remember(PanelState& st, const std::string& label) {
-    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
-    st.widgets[label] = {a.x, a.y, b.x, b.y};
-}
-
-bool full_button(PanelState& st, const char* label) {
-    const bool pressed = ImGui::Button(label, ImVec2(-1.0f, 0.0f));
-    remember(st, label);
-    return pressed;
-}
-
-// Two buttons side by side, each half the row.
-std::pair<bool, bool> button_pair(PanelState& st, const char* a, const char* b) {
-    const float w = (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x) / 2;
-    const bool pa = ImGui::Button(a, ImVec2(w, 0.0f));
-    remember(st, a);
-    ImGui::SameLine();
-    const bool pb = ImGui::Button(b, ImVec2(w, 0.0f));
-    remember(st, b);
-    return {pa, pb};
-}
-
-// A length of the panel at scale 1, scaled with the text (panel_layout.hpp).
-float px(float v) {
-    return v * ImGui::GetFontSize() / 15.0f;
-}
+const ImVec4 accent = panel_accent;
+const ImVec4 warning = panel_warning;
 
 // The cue ball seen from the shooter, with a dot where the tip will hit; click or drag on it
 // to move the dot. Returns the new (side, top) when changed.
@@ -97,8 +71,13 @@ std::optional<AimGuide> aim_guide_combo(PanelState& st, AimGuide now) {
 
 // The New Game dialog opens with the current settings as its draft.
 void open_new_game(PanelState& st, const Settings& settings) {
-    st.draft = NewGame{settings.game, settings.names, settings.players, settings.house_rules,
-                       settings.aim_guide};
+    // The table game and its options stay as last chosen; the rest comes from the settings.
+    st.draft.game = settings.game;
+    st.draft.names = settings.names;
+    st.draft.players = settings.players;
+    st.draft.house_rules = settings.house_rules;
+    st.draft.aim_guide = settings.aim_guide;
+    st.draft.practice = false;
     st.new_game_open = true;
 }
 
@@ -150,19 +129,21 @@ void new_game_dialog(PanelState& st, PanelActions& out) {
     ImGui::SetNextWindowSize(ImVec2(px(360), 0), ImGuiCond_Appearing);
     if (!ImGui::BeginPopupModal("New Game", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
     NewGame& d = st.draft;
-    int game = d.game == rules::Game::eight_ball ? 0 : 1;
-    ImGui::RadioButton("8-ball", &game, 0);
-    ImGui::SameLine();
-    ImGui::RadioButton("9-ball", &game, 1);
-    d.game = game == 0 ? rules::Game::eight_ball : rules::Game::nine_ball;
+    table_game_choice(d, st);
+    const bool pool = d.table == TableGame::pool;
+    if (!pool) d.practice = false;  // practice: the pool tables
+    ImGui::BeginDisabled(!pool);
     ImGui::Checkbox("Practice (one player, no rules)", &d.practice);
     remember(st, "Practice (one player, no rules)");
+    ImGui::EndDisabled();
     std::vector<std::string> kinds{"human", "random"};
     for (int level = 1; level <= 5; ++level) kinds.push_back(fmt::format("ai:{}", level));
-    if (!d.practice)
+    if (!pool) match_seats(d);
+    if (pool && !d.practice)
         for (std::size_t seat = 0; seat < 2; ++seat) seat_row(d, seat, kinds);
     if (auto g = aim_guide_combo(st, d.aim_guide)) d.aim_guide = *g;
-    if (!d.practice && d.game == rules::Game::eight_ball &&
+    match_rules_editor(d, st);
+    if (pool && !d.practice && d.game == rules::Game::eight_ball &&
         ImGui::CollapsingHeader("House rules (8-ball)"))
         house_rules_editor(d.house_rules);
     ImGui::Separator();
@@ -199,8 +180,12 @@ void header(const Controller& c, PanelState& st) {
     ImGui::SameLine();
     const std::string which =
         c.practicing() ? "practice" : fmt::format("game {}", s.game_number() + 1);
-    ImGui::TextDisabled("%s  %s", s.config().game == rules::Game::eight_ball ? "8-ball" : "9-ball",
-                        which.c_str());
+    if (c.snooker() || c.carom())
+        match_title(c);
+    else
+        ImGui::TextDisabled("%s  %s",
+                            s.config().game == rules::Game::eight_ball ? "8-ball" : "9-ball",
+                            which.c_str());
     if (!st.notice.empty()) {
         ImGui::PushTextWrapPos(0.0f);
         if (st.notice_is_error)
@@ -227,7 +212,8 @@ void original_controls(const Controller& c, const Settings& settings, PanelState
     if (full_button(st, "Change View")) out.change_view = true;
     const auto [restart, exit] = button_pair(st, "Restart", "Exit");
     if (restart) {
-        if (s.history().empty() || s.phase() == game::Phase::game_over)
+        const bool match = c.snooker() || c.carom();  // a match is never restarted unasked
+        if (!match && (s.history().empty() || s.phase() == game::Phase::game_over))
             out.restart = true;
         else
             st.confirm_restart = true;
@@ -265,16 +251,19 @@ void information_bar(const Controller& c, PanelState& st, PanelActions& out) {
         out.save_position = save;
         out.load_position = load;
     }
+    match_choices(c, st, out);
     if (std::optional<rules::Choice> choice = c.session().choice(); choice && c.human_to_act())
         for (rules::ChoiceOption o : choice->options)
             if (full_button(st, choice_words(o).c_str())) out.choice = o;
 }
 
 // Spin, elevation, push-out and the calls: what the next stroke will be.
-void stroke_controls(const Controller& c, PanelActions& out) {
+void stroke_controls(const Controller& c, PanelState& st, PanelActions& out) {
     const game::Session& s = c.session();
     const bool mine = c.human_to_act();
-    const bool with_rules = !c.practicing();  // practice: no push-out, no calls
+    // Practice: no push-out, no calls; snooker nominates instead, three-cushion calls nothing.
+    const bool with_rules = !c.practicing() && !c.snooker() && !c.carom();
+    nomination_controls(c, st, out);
     ImGui::Separator();
     ImGui::Text("Tip (spin)");
     if (auto spin = spin_picker(c.aim().side, c.aim().top, mine)) out.spin = spin;
@@ -322,10 +311,15 @@ void play_buttons(const Controller& c, const Settings& settings, PanelState& st,
                   PanelActions& out) {
     ImGui::Separator();
     if (auto g = aim_guide_combo(st, settings.aim_guide)) out.aim_guide = g;
-    if (c.human_to_act() && c.session().phase() == game::Phase::shoot) {
-        const auto [strike, hint] = button_pair(st, "Strike", "Hint");
-        out.strike = strike;
-        out.hint = hint;
+    const bool choosing = c.snooker() && c.snooker()->phase() == game::MatchPhase::choose;
+    if (c.human_to_act() && c.session().phase() == game::Phase::shoot && !choosing) {
+        if (c.snooker() || c.carom()) {  // no hint: the AI does not play these games yet
+            out.strike = full_button(st, "Strike");
+        } else {
+            const auto [strike, hint] = button_pair(st, "Strike", "Hint");
+            out.strike = strike;
+            out.hint = hint;
+        }
     } else {
         ImGui::Dummy(ImVec2(0.0f, ImGui::GetFrameHeight()));
     }
@@ -340,7 +334,9 @@ void play_buttons(const Controller& c, const Settings& settings, PanelState& st,
         ImGui::Dummy(ImVec2(half, ImGui::GetFrameHeight()));
     }
     ImGui::SameLine();
+    ImGui::BeginDisabled(c.snooker() || c.carom());  // shot links carry pool positions
     if (ImGui::Button("Copy shot link", ImVec2(half, 0.0f))) out.copy_link = true;
+    ImGui::EndDisabled();
     remember(st, "Copy shot link");
     const auto [new_game, controls] = button_pair(st, "New Game...", "Controls");
     if (new_game) open_new_game(st, settings);
@@ -421,10 +417,11 @@ PanelActions draw_panel(const Controller& c, const Settings& settings, PanelStat
                      ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar |
                      ImGuiWindowFlags_NoScrollWithMouse);
     header(c, st);
+    scoreboard(c);
     original_controls(c, settings, st, out);
     ImGui::BeginChild("##middle", ImVec2(0.0f, -footer_height()));
     information_bar(c, st, out);
-    stroke_controls(c, out);
+    stroke_controls(c, st, out);
     ImGui::EndChild();
     play_buttons(c, settings, st, out);
     new_game_dialog(st, out);

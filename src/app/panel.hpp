@@ -12,17 +12,27 @@
 
 #include "app/controller.hpp"
 #include "app/settings.hpp"
+#include "rules/snooker.hpp"
+#include "rules/three_cushion.hpp"
 
 namespace app {
 
+/// Which table a New Game is played on: pool (`NewGame::game` says 8-ball or 9-ball), snooker
+/// or three-cushion.
+enum class TableGame { pool, snooker, three_cushion };
+
 /// A New Game as the dialog sets it up.
 struct NewGame {
+    TableGame table = TableGame::pool;
     rules::Game game = rules::Game::eight_ball;
     std::array<std::string, 2> names{"Player 1", "Player 2"};
     std::array<std::string, 2> players{"human", "human"};
     rules::Options house_rules;
     AimGuide aim_guide = AimGuide::lines;
-    bool practice = false;  ///< one player at this game's table and balls, no rules
+    bool practice = false;          ///< one player at this game's table and balls, no rules
+    rules::SnookerOptions snooker;  ///< the miss rule
+    int best_of = 1;                ///< snooker: frames in the match
+    rules::CaromOptions carom;      ///< points to win, equal innings
 };
 
 struct PanelActions {
@@ -47,6 +57,9 @@ struct PanelActions {
     bool call_safety = false;
     bool clear_call = false;
     std::optional<NewGame> new_game;
+    std::optional<rules::AfterFoul> after_foul;  ///< snooker: the choice after a foul
+    std::optional<std::optional<int>> nominate;  ///< snooker: a ball, or back to the aim's
+    bool next_frame = false;                     ///< snooker: next frame; carom: next game
 };
 
 /// What the panel keeps between frames (which dialog is open, the New Game draft).

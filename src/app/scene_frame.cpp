@@ -36,6 +36,29 @@ void add_dropping_balls(const Controller& c, double R, std::vector<render::BallV
     }
 }
 
+// The stroke on show and where its cue ball lay: the match's, or the session's last shot.
+std::optional<Controller::StrokeShown> last_stroke(const Controller& c) {
+    if (c.snooker() || c.carom()) return c.match_stroke();
+    const game::Session& s = c.session();
+    if (s.history().empty()) return std::nullopt;
+    const game::ShotRecord& r = s.history().back();
+    const auto at = r.before.positions.find(0);
+    if (at == r.before.positions.end()) return std::nullopt;
+    return Controller::StrokeShown{at->second, r.stroke};
+}
+
+// The cue moving from where it was drawn back to the ball, `time` (< 0) before the strike.
+render::CueView stroke_cue(const Controller::StrokeShown& s, double time) {
+    render::CueView k;
+    k.cue_ball = {static_cast<float>(s.cue_ball.x), static_cast<float>(s.cue_ball.y)};
+    k.heading = static_cast<float>(s.stroke.heading_deg * std::numbers::pi / 180.0);
+    k.elevation = static_cast<float>(s.stroke.elevation_deg * std::numbers::pi / 180.0);
+    k.tip_offset = {static_cast<float>(s.stroke.side), static_cast<float>(s.stroke.top)};
+    k.pull_back =
+        pull_back(power_of_speed(s.stroke.speed)) * static_cast<float>(-time / stroke_lead);
+    return k;
+}
+
 }  // namespace
 
 render::FrameView SceneFrame::view(const render::Camera& camera) const {
@@ -59,7 +82,7 @@ SceneFrame build_scene(const Controller& c, AimGuide aim_guide,
     f.tray = c.tray();
     const AimPreview* preview = c.preview();
     const bool at_table = c.session().phase() == game::Phase::shoot && !c.moving();
-    const auto cue = c.session().state().positions.find(0);
+    const auto cue = c.session().state().positions.find(c.cue_ball_id());
     if (at_table && preview && cue != c.session().state().positions.end() &&
         !c.computer_thinking()) {
         const Aim& a = c.aim();
@@ -81,21 +104,9 @@ SceneFrame build_scene(const Controller& c, AimGuide aim_guide,
         f.show_aim = aim_guide != AimGuide::off || !f.aim.marks.empty();
     }
     // The stroke: before the strike the cue moves from where it was drawn back to the ball.
-    const game::Session& s = c.session();
-    if (c.moving() && c.playback().time() < 0.0 && !s.history().empty()) {
-        const game::ShotRecord& r = s.history().back();
-        const auto at = r.before.positions.find(0);
-        if (at != r.before.positions.end()) {
-            render::CueView k;
-            k.cue_ball = {static_cast<float>(at->second.x), static_cast<float>(at->second.y)};
-            k.heading = static_cast<float>(r.stroke.heading_deg * std::numbers::pi / 180.0);
-            k.elevation = static_cast<float>(r.stroke.elevation_deg * std::numbers::pi / 180.0);
-            k.tip_offset = {static_cast<float>(r.stroke.side), static_cast<float>(r.stroke.top)};
-            k.pull_back = pull_back(power_of_speed(r.stroke.speed)) *
-                          static_cast<float>(-c.playback().time() / stroke_lead);
-            f.cue = k;
-        }
-    }
+    if (c.moving() && c.playback().time() < 0.0)
+        if (const std::optional<Controller::StrokeShown> k = last_stroke(c))
+            f.cue = stroke_cue(*k, c.playback().time());
     const rules::BallInHand in_hand = c.session().ball_in_hand();
     if (c.human_to_act() && in_hand != rules::BallInHand::none &&
         cue != c.session().state().positions.end()) {
@@ -105,6 +116,11 @@ SceneFrame build_scene(const Controller& c, AimGuide aim_guide,
         h.pos = {static_cast<float>(at.x), static_cast<float>(at.y)};
         h.legal = !refused;
         h.kitchen_only = in_hand == rules::BallInHand::kitchen;
+        if (const game::SnookerSession* s = c.snooker()) {
+            const physics::SnookerMarkings& m = s->marks().marks;
+            h.d_only = glm::vec3(static_cast<float>(m.baulk_x), static_cast<float>(m.d_centre().y),
+                                 static_cast<float>(m.d_radius));
+        }
         f.ball_in_hand = h;
     }
     return f;

@@ -20,6 +20,18 @@ std::unique_ptr<game::Player> make_computer(const std::string& kind, std::uint64
                                 "\" (expected human, random or ai:1 to ai:5)");
 }
 
+std::optional<game::SnookerPlayer> snooker_computer(const std::string& kind, std::uint64_t seed,
+                                                    double /*noise*/) {
+    if (kind == "random") return game::random_snooker_player(seed);
+    return std::nullopt;  // the AI's snooker player is wired in here
+}
+
+std::optional<game::CaromPlayer> carom_computer(const std::string& kind, std::uint64_t seed,
+                                                double /*noise*/) {
+    if (kind == "random") return game::random_carom_player(seed);
+    return std::nullopt;  // the AI's three-cushion player is wired in here
+}
+
 std::string seat_words(const std::string& kind) {
     if (kind == "human") return "Human";
     if (kind == "random") return "Computer (random)";

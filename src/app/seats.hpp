@@ -6,8 +6,10 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 
+#include "game/match_player.hpp"
 #include "game/player.hpp"
 
 namespace app {
@@ -17,6 +19,14 @@ namespace app {
 /// when it is unknown.
 std::unique_ptr<game::Player> make_computer(const std::string& kind, std::uint64_t seed,
                                             double noise);
+
+/// The computer player of snooker (three-cushion) of `kind`, seeded, for execution noise of
+/// scale `noise`; empty for "human" and for a kind that has no player for the game yet. Today
+/// "random"; the AI's levels ("ai:1" … "ai:5") plug in here, one function per game.
+std::optional<game::SnookerPlayer> snooker_computer(const std::string& kind, std::uint64_t seed,
+                                                    double noise);
+std::optional<game::CaromPlayer> carom_computer(const std::string& kind, std::uint64_t seed,
+                                                double noise);
 
 /// "Human", "Computer (random)", "Computer (level 3)".
 std::string seat_words(const std::string& kind);

@@ -51,6 +51,36 @@ const char* path_end_name(PathEnd e) {
     return "?";
 }
 
+// The snooker or three-cushion scoreboard as the panel shows it; null in pool.
+nlohmann::ordered_json match_json(const Controller& c) {
+    using rules::Player;
+    if (const game::SnookerSession* s = c.snooker()) {
+        const rules::SnookerState& st = s->state();
+        const std::optional<int> nom = c.nomination();
+        return {
+            {"game", "snooker"},
+            {"scores", {st.score(Player::A), st.score(Player::B)}},
+            {"break", st.break_points},
+            {"remaining", s->points_remaining()},
+            {"frames", {s->frames_won()[0], s->frames_won()[1]}},
+            {"reds", st.reds()},
+            {"choices", s->choices().size()},
+            {"in_hand", st.cue_ball == rules::CueBall::in_hand},
+            {"nomination", nom ? nlohmann::ordered_json(*nom) : nlohmann::ordered_json(nullptr)},
+            {"frame_over", s->frame_winner().has_value()}};
+    }
+    if (const game::CaromSession* s = c.carom()) {
+        const rules::CaromState& st = s->state();
+        return {{"game", "three_cushion"},
+                {"scores", {st.scores[0], st.scores[1]}},
+                {"innings", {st.innings[0], st.innings[1]}},
+                {"run", st.run},
+                {"cue_ball", s->cue_ball()},
+                {"game_over", s->game_over()}};
+    }
+    return nullptr;
+}
+
 }  // namespace
 
 std::string status_json(const Controller& c, const Settings& s, CameraMode view,
@@ -75,7 +105,7 @@ std::string status_json(const Controller& c, const Settings& s, CameraMode view,
     j["winner"] = session.winner() ? nlohmann::ordered_json(session.name(*session.winner()))
                                    : nlohmann::ordered_json(nullptr);
     j["heading_deg"] = c.aim().heading_deg;
-    const auto cue = session.state().positions.find(0);
+    const auto cue = session.state().positions.find(c.cue_ball_id());
     j["cue_ball"] = cue != session.state().positions.end()
                         ? nlohmann::ordered_json::array({cue->second.x, cue->second.y})
                         : nlohmann::ordered_json(nullptr);
@@ -100,6 +130,7 @@ std::string status_json(const Controller& c, const Settings& s, CameraMode view,
     for (const auto& [id, at] : frame.ball_px) px[std::to_string(id)] = at;
     j["ball_px"] = std::move(px);
     j["practice"] = c.practicing();
+    j["match"] = match_json(c);
     j["drawn"] = {{"cue", frame.cue},
                   {"aim_guide", frame.aim_guide},
                   {"ball_in_hand", frame.ball_in_hand},

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "physics/markings.hpp"
 #include "render/cue_stick.hpp"
 #include "render/moving_scale.hpp"
 #include "render/pockets.hpp"
@@ -135,6 +136,33 @@ bool is_stripe(int id) {
     return id >= 9 && id <= 15;
 }
 
+glm::vec3 ball_colour(int id, GameLook look) {
+    constexpr std::array<glm::vec3, 7> snooker{{
+        {0.70f, 0.04f, 0.04f},  // red
+        {0.98f, 0.80f, 0.06f},  // yellow
+        {0.02f, 0.38f, 0.16f},  // green
+        {0.38f, 0.19f, 0.07f},  // brown
+        {0.05f, 0.20f, 0.70f},  // blue
+        {0.97f, 0.55f, 0.62f},  // pink
+        kBlack,
+    }};
+    constexpr std::array<glm::vec3, 3> carom{
+        {kColours[0], {0.98f, 0.82f, 0.16f}, {0.80f, 0.05f, 0.04f}}};  // white, yellow, red
+    switch (look) {
+        case GameLook::pool:
+            return ball_colour(id);
+        case GameLook::snooker:
+            if (id == 0) return kColours[0];
+            if (id >= 1 && id <= 15) return snooker[0];
+            if (id >= 16 && id <= 21) return snooker[static_cast<std::size_t>(id - 15)];
+            break;
+        case GameLook::carom:
+            if (id >= 0 && id <= 2) return carom[static_cast<std::size_t>(id)];
+            break;
+    }
+    return {0.5f, 0.5f, 0.5f};
+}
+
 BallView ball_view(const physics::BallState& s, double ball_radius, const glm::dquat& q) {
     return {
         s.id,
@@ -211,6 +239,7 @@ struct Renderer::Impl {
     /// Flat (lit = false, blended with `alpha`, no depth writes) or lit solid geometry.
     void draw_solid(const std::vector<SolidVertex>& v, bool lit, float alpha,
                     const glm::mat4& view_proj, const glm::vec3& eye);
+    void set_cloth_marks(GLuint prog) const;
     void set_table_uniforms(GLuint prog, const glm::mat4& view_proj, const glm::vec3& eye) const;
     void bake_cloth_light();
     bool use_cache(const FrameView& frame, int width, int height, const glm::mat4& view_proj);
@@ -240,6 +269,30 @@ struct Renderer::Impl {
     }
 };
 
+// The spots and lines on the cloth of the game's table.
+void Renderer::Impl::set_cloth_marks(GLuint prog) const {
+    std::vector<physics::Vec2> spots;
+    glm::vec3 baulk{0.0f};
+    if (settings.look == GameLook::snooker) {
+        const physics::SnookerMarkings m = physics::snooker_markings(table);
+        for (int c = physics::snooker_ball::yellow; c <= physics::snooker_ball::black; ++c)
+            spots.push_back(m.spot(c));
+        baulk = {m.baulk_x, m.d_centre().y, m.d_radius};
+    } else if (settings.look == GameLook::carom) {
+        const physics::CaromSpots c = physics::carom_spots(table);
+        spots = {c.top, c.bottom, c.start_left, c.start_right};
+    } else {
+        spots = {table.foot_spot(), table.head_spot()};
+    }
+    std::vector<glm::vec2> xy;
+    for (const physics::Vec2& v : spots)
+        xy.emplace_back(static_cast<float>(v.x), static_cast<float>(v.y));
+    glUniform2fv(glGetUniformLocation(prog, "u_spots"), static_cast<GLsizei>(xy.size()),
+                 glm::value_ptr(xy[0]));
+    glUniform1i(glGetUniformLocation(prog, "u_spot_count"), static_cast<GLint>(xy.size()));
+    glUniform3fv(glGetUniformLocation(prog, "u_baulk"), 1, glm::value_ptr(baulk));
+}
+
 void Renderer::Impl::set_table_uniforms(GLuint prog, const glm::mat4& view_proj,
                                         const glm::vec3& eye) const {
     set_common(prog, view_proj, eye);
@@ -250,12 +303,7 @@ void Renderer::Impl::set_table_uniforms(GLuint prog, const glm::mat4& view_proj,
     glUniform3fv(glGetUniformLocation(prog, "u_holes"), 6, glm::value_ptr(hole_grid[0]));
     glUniform4f(glGetUniformLocation(prog, "u_table"), static_cast<float>(table.length()),
                 static_cast<float>(table.width()), dims.cushion_width, dims.rail_width);
-    const physics::Vec2 foot = table.foot_spot();
-    glUniform2f(glGetUniformLocation(prog, "u_foot_spot"), static_cast<float>(foot.x),
-                static_cast<float>(foot.y));
-    const physics::Vec2 head = table.head_spot();
-    glUniform2f(glGetUniformLocation(prog, "u_head_spot"), static_cast<float>(head.x),
-                static_cast<float>(head.y));
+    set_cloth_marks(prog);
     glUniform1f(glGetUniformLocation(prog, "u_rail_height"), dims.rail_height);
     const glm::vec3 liner = tone_map(glm::vec3(0.012f, 0.010f, 0.009f), settings.exposure);
     glUniform3fv(glGetUniformLocation(prog, "u_liner_shown"), 1, glm::value_ptr(liner));
@@ -824,6 +872,12 @@ void Renderer::Impl::draw_ball_in_hand_marks(const BallInHandView& h, const Pass
         add_ribbon(head_string, {{L / 4, 0.0f}, {L / 4, W}}, 0.0015f, 0.0006f, {0.9f, 0.95f, 1.0f});
         draw_solid(head_string, false, 0.5f, p.view_proj, p.eye);
     }
+    if (h.d_only) {
+        std::vector<SolidVertex> d;
+        add_half_disc(d, {h.d_only->x, h.d_only->y}, h.d_only->z, 1.5707963f, 4.7123890f, 0.0005f,
+                      {0.85f, 0.92f, 1.0f});
+        draw_solid(d, false, 0.07f, p.view_proj, p.eye);
+    }
     std::vector<SolidVertex> ring;
     add_ring(ring, h.pos, radius * 1.3f, 0.003f, 0.0007f, h.legal ? glm::vec3(0.95f) : kRefused);
     draw_solid(ring, false, 0.85f, p.view_proj, p.eye);
@@ -881,14 +935,18 @@ void Renderer::Impl::draw_balls(const FrameView& frame, const Pass& p) {
 
 void Renderer::Impl::draw_ball(const BallView& b) {
     const glm::mat3 rot = glm::mat3_cast(b.orientation);
-    const glm::vec3 colour = ball_colour(b.id);
+    const glm::vec3 colour = ball_colour(b.id, settings.look);
+    const bool pool = settings.look == GameLook::pool;
+    const bool cue = b.id == 0 || (settings.look == GameLook::carom && b.id == 1);
     glUniform3fv(glGetUniformLocation(ball_prog, "u_centre"), 1, glm::value_ptr(b.centre));
     glUniformMatrix3fv(glGetUniformLocation(ball_prog, "u_rotation"), 1, GL_FALSE,
                        glm::value_ptr(rot));
     glUniform3fv(glGetUniformLocation(ball_prog, "u_colour"), 1, glm::value_ptr(colour));
-    glUniform1i(glGetUniformLocation(ball_prog, "u_stripe"), is_stripe(b.id) ? 1 : 0);
-    glUniform1i(glGetUniformLocation(ball_prog, "u_cue"), b.id == 0 ? 1 : 0);
-    glUniform1i(glGetUniformLocation(ball_prog, "u_number"), b.id >= 1 && b.id <= 15 ? b.id : 0);
+    glUniform1i(glGetUniformLocation(ball_prog, "u_stripe"), pool && is_stripe(b.id) ? 1 : 0);
+    glUniform1i(glGetUniformLocation(ball_prog, "u_cue"), cue ? 1 : 0);
+    glUniform1i(glGetUniformLocation(ball_prog, "u_plain"), pool ? 0 : 1);
+    glUniform1i(glGetUniformLocation(ball_prog, "u_number"),
+                pool && b.id >= 1 && b.id <= 15 ? b.id : 0);
     glDrawArrays(GL_TRIANGLES, 0, 6);
 }
 

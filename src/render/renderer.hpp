@@ -63,6 +63,8 @@ struct BallInHandView {
     glm::vec2 pos{0.0f};        ///< where the cue ball would go (unit: m), table frame
     bool legal = true;          ///< false: drawn tinted red (overlaps a ball, off the cloth, ...)
     bool kitchen_only = false;  ///< true: the area behind the head string (x < L/4) is shaded
+    /// Snooker: the D is shaded (x of the baulk line, y of its centre, radius; unit: m).
+    std::optional<glm::vec3> d_only;
 };
 
 /// Everything one frame shows. Spans must stay valid during draw().
@@ -82,8 +84,14 @@ struct FrameView {
     bool camera_moving = false;
 };
 
+/// Which game's balls and cloth marks are drawn: pool (numbered balls, head and foot spots),
+/// snooker (15 reds and the six colours, plain; the baulk line, the D and the colour spots),
+/// carom (white, yellow and red, plain; the UMB spots). Every table has diamonds on its rails.
+enum class GameLook { pool, snooker, carom };
+
 /// Quality switches (defaults: everything on).
 struct RenderSettings {
+    GameLook look = GameLook::pool;
     bool shadows = true;    ///< soft ball shadows and contact occlusion on the cloth
     bool fog = true;        ///< the table's lower part fades into the background
     float exposure = 1.0f;  ///< scale of all light (unit: 1)
@@ -110,6 +118,9 @@ struct RenderSettings {
 /// Standard ball colours (sRGB, 0–1): 0 cue ball, 1–8 solids, 9–15 stripes of 1–7's colour.
 glm::vec3 ball_colour(int id);
 bool is_stripe(int id);
+/// A ball's colour in a game's set (sRGB): pool as ball_colour; snooker 0 white, 1–15 red,
+/// 16 yellow … 21 black; carom 0 white, 1 yellow, 2 red.
+glm::vec3 ball_colour(int id, GameLook look);
 
 /// A ball on the cloth from a physics state (z = R).
 BallView ball_view(const physics::BallState& state, double ball_radius,

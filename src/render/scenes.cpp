@@ -216,8 +216,47 @@ DemoScene ball_in_hand_scene(float aspect) {
         return b.id == 0 || std::find(s.tray.begin(), s.tray.end(), b.id) != s.tray.end();
     });
     const float L = static_cast<float>(s.table.length()), W = static_cast<float>(s.table.width());
-    s.ball_in_hand = BallInHandView{{0.14f * L, 0.58f * W}, false, true};
+    s.ball_in_hand = BallInHandView{{0.14f * L, 0.58f * W}, false, true, std::nullopt};
     return s;
+}
+
+namespace {
+
+DemoScene rest_scene(const physics::TableSpec& spec, const physics::Params& params,
+                     const std::vector<physics::BallState>& balls, GameLook look, float aspect) {
+    DemoScene s;
+    s.table = physics::build_table(spec);
+    s.ball_radius = params.ball_radius;
+    s.look = look;
+    for (const physics::BallState& b : balls)
+        s.balls.push_back(ball_view(b, s.ball_radius, initial_orientation(b.id)));
+    s.camera = overhead_camera(s.table, aspect);
+    return s;
+}
+
+}  // namespace
+
+DemoScene snooker_scene(float aspect) {
+    const physics::Params params = *physics::params_preset("snooker");
+    const physics::Table t = physics::build_table(physics::snooker_table_spec());
+    return rest_scene(physics::snooker_table_spec(), params, physics::snooker_rack(t, params),
+                      GameLook::snooker, aspect);
+}
+
+DemoScene snooker_cue_view_scene(float aspect) {
+    DemoScene s = snooker_scene(aspect);
+    const BallView& cue = s.balls.front();
+    s.cue = CueView{{cue.centre.x, cue.centre.y}, 0.0f, 0.08f, 0.06f};
+    s.camera = cue_ball_camera(s.table, static_cast<float>(s.ball_radius),
+                               {{cue.centre.x, cue.centre.y}, 0.0f, 0.75f, 0.2775f, 0.08f});
+    return s;
+}
+
+DemoScene carom_scene(float aspect) {
+    const physics::Params params = *physics::params_preset("carom");
+    const physics::Table t = physics::build_table(physics::carom_table_spec());
+    return rest_scene(physics::carom_table_spec(), params, physics::carom_rack(t), GameLook::carom,
+                      aspect);
 }
 
 }  // namespace render

@@ -13,7 +13,8 @@ namespace render {
 
 struct DemoScene {
     physics::Table table;
-    double ball_radius = 0.028575;  ///< (unit: m)
+    double ball_radius = 0.028575;   ///< (unit: m)
+    GameLook look = GameLook::pool;  ///< the game's balls and cloth marks (RenderSettings::look)
     std::vector<BallView> balls;
     Camera camera;
     std::optional<CueView> cue;
@@ -55,5 +56,14 @@ DemoScene cushion_scene(float aspect);
 /// ball-return tray, the cue ball in hand behind the head string (kitchen shaded) on an
 /// illegal spot (red). Overhead camera.
 DemoScene ball_in_hand_scene(float aspect);
+
+/// The 12 ft snooker table set up (WPBSA), the cue ball in the D: the baulk line, the D, the
+/// colour spots, snooker pockets and ball colours. Overhead camera.
+DemoScene snooker_scene(float aspect);
+/// The same set-up seen from behind the cue ball in the D, aimed at the reds.
+DemoScene snooker_cue_view_scene(float aspect);
+/// The 10 ft carom table in the UMB starting position: no pockets, the spots, the diamonds,
+/// white, yellow and red. Overhead camera.
+DemoScene carom_scene(float aspect);
 
 }  // namespace render

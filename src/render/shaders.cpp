@@ -183,8 +183,9 @@ uniform vec4 u_bake_rect;        // the baked texture's footprint: xy min corner
 uniform vec3 u_holes[6];       // xy centre, z radius (unit: m), as a 3 x 2 grid (hole_distance)
 uniform vec4 u_table;          // length, width, cushion width, rail width (unit: m)
 uniform vec3 u_cloth_colour;   // sRGB
-uniform vec2 u_foot_spot;
-uniform vec2 u_head_spot;
+uniform vec2 u_spots[8];       // the spots on the cloth (pool: foot and head; snooker: colours)
+uniform int u_spot_count;
+uniform vec3 u_baulk;          // snooker: baulk line x, the D's centre y and radius (z 0: none)
 uniform float u_rail_height;   // (unit: m)
 
 // Distance to the nearest pocket hole's edge (negative inside). The holes come in a 3 x 2
@@ -302,9 +303,17 @@ void main() {
         // Baking the cloth (seen from above, n = +z): the light at the mean nap (the nap
         // factor 0.72 + 0.56 nap is 1 at nap = 0.5) and in a, how much of it the nap modulates.
         vec3 albedo = u_cloth_linear;
-        // The head and foot spots: thin white discs.
-        float spot = min(length(v_pos.xy - u_foot_spot), length(v_pos.xy - u_head_spot));
+        // The spots: thin white discs.
+        float spot = 1e3;
+        for (int i = 0; i < u_spot_count; ++i) spot = min(spot, length(v_pos.xy - u_spots[i]));
         albedo = mix(albedo, vec3(0.75), 1.0 - smoothstep(0.006, 0.0075, spot));
+        if (u_baulk.z > 0.0) {
+            // The baulk line across the table and the D behind it: thin chalk-white lines.
+            float line = abs(v_pos.x - u_baulk.x);
+            vec2 dc = v_pos.xy - vec2(u_baulk.x, u_baulk.y);
+            if (v_pos.x < u_baulk.x) line = min(line, abs(length(dc) - u_baulk.z));
+            albedo = mix(albedo, vec3(0.75), 1.0 - smoothstep(0.0011, 0.0019, line));
+        }
         vec3 cloth = lamps_diffuse(v_pos, vec3(0.0, 0.0, 1.0), albedo) + albedo * 0.035;
         // The cushions hide part of the lamps and the room from the cloth along them.
         float to_nose = min(min(v_pos.x, u_table.x - v_pos.x), min(v_pos.y, u_table.y - v_pos.y));
@@ -399,6 +408,7 @@ uniform vec3 u_colour;        // sRGB
 uniform int u_stripe;         // 1: a stripe ball (colour band on white)
 uniform int u_cue;            // 1: the cue ball
 uniform int u_number;         // 1-15: the number in the white circles
+uniform int u_plain;          // 1: no number circles (snooker, carom)
 uniform float u_number_scale; // the circles' size relative to a real ball's (>= 1: far away)
 uniform vec4 u_tint;          // rgb: mixed into the colour by a (ball in hand, illegal: red)
 uniform float u_alpha;        // < 1: drawn see-through (ball in hand)
@@ -451,7 +461,7 @@ void main() {
     vec2 q = vec2(local.x >= 0.0 ? local.y : -local.y, local.z) / rho;
     vec2 cell = vec2(float(u_number % 4), float(3 - u_number / 4));
     float ink = texture(u_numbers, (cell + 0.5 + 0.5 * clamp(q, -0.97, 0.97)) * 0.25).r;
-    if (u_cue == 0 && abs(local.x) > sqrt(1.0 - rho * rho)) albedo = mix(white, vec3(0.025, 0.022, 0.02), ink);
+    if (u_cue == 0 && u_plain == 0 && abs(local.x) > sqrt(1.0 - rho * rho)) albedo = mix(white, vec3(0.025, 0.022, 0.02), ink);
     // The cue ball's red dots show its spin.
     if (u_cue == 1 && abs(local.x) > 0.985) albedo = vec3(0.75, 0.05, 0.04);
     albedo = to_linear(albedo);

@@ -83,6 +83,20 @@ void add_patch(std::vector<SolidVertex>& out, glm::vec2 lo, glm::vec2 hi, float 
     out.insert(out.end(), {a, b, c, a, c, d});
 }
 
+void add_half_disc(std::vector<SolidVertex>& out, glm::vec2 centre, float radius, float a0,
+                   float a1, float z, glm::vec3 colour) {
+    const glm::vec3 up{0, 0, 1};
+    const int n = 32;
+    for (int i = 0; i < n; ++i) {
+        const float t0 = a0 + (a1 - a0) * static_cast<float>(i) / n;
+        const float t1 = a0 + (a1 - a0) * static_cast<float>(i + 1) / n;
+        const glm::vec2 p0 = centre + radius * glm::vec2(std::cos(t0), std::sin(t0));
+        const glm::vec2 p1 = centre + radius * glm::vec2(std::cos(t1), std::sin(t1));
+        out.insert(out.end(), {SolidVertex{{centre, z}, up, colour},
+                               SolidVertex{{p0, z}, up, colour}, SolidVertex{{p1, z}, up, colour}});
+    }
+}
+
 void add_ring(std::vector<SolidVertex>& out, glm::vec2 centre, float radius, float half_width,
               float z, glm::vec3 colour) {
     std::vector<glm::vec2> circle;

@@ -27,6 +27,9 @@ void add_box(std::vector<SolidVertex>& out, glm::vec3 lo, glm::vec3 hi, glm::vec
 /// A flat quad on the cloth (z) from `lo` to `hi`.
 void add_patch(std::vector<SolidVertex>& out, glm::vec2 lo, glm::vec2 hi, float z,
                glm::vec3 colour);
+/// A flat half disc on the cloth (z): centre, radius, from angle a0 to a1 (unit: rad).
+void add_half_disc(std::vector<SolidVertex>& out, glm::vec2 centre, float radius, float a0,
+                   float a1, float z, glm::vec3 colour);
 /// A ring on the cloth (z) round `centre`.
 void add_ring(std::vector<SolidVertex>& out, glm::vec2 centre, float radius, float half_width,
               float z, glm::vec3 colour);

@@ -152,6 +152,24 @@ void add_cushion(std::vector<Vertex>& out, const CushionOutline& o, const TableD
     }
 }
 
+/// A pocketless table's cushions meet at the corners: each corner square behind both noses is
+/// closed by the two cushions' tops, sloping from the nose up to the rail.
+void add_cushion_corners(std::vector<Vertex>& out, float L, float W, const TableDims& d) {
+    const float w = d.cushion_width, nose = d.cushion_height + 0.0045f, back = d.rail_height;
+    const glm::vec2 corners[4] = {{0, 0}, {L, 0}, {L, W}, {0, W}};
+    const glm::vec2 outward[4] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    for (int k = 0; k < 4; ++k) {
+        const glm::vec2 c = corners[k], o = outward[k];
+        const glm::vec3 a{c, nose}, bx{c.x + w * o.x, c.y, back}, by{c.x, c.y + w * o.y, back},
+            far{c.x + w * o.x, c.y + w * o.y, back};
+        // Counter-clockwise seen from above, so the face points up.
+        if (o.x * o.y > 0)
+            add_quad(out, a, bx, far, by, {0, 0.03f}, {0.05f, 0.08f}, {0.05f, 0.08f}, {0, 0.08f});
+        else
+            add_quad(out, a, by, far, bx, {0, 0.03f}, {0.05f, 0.08f}, {0.05f, 0.08f}, {0, 0.08f});
+    }
+}
+
 /// A flat, upward quad on the cloth from lo to hi (texture coordinates = position).
 void add_flat(std::vector<Vertex>& out, glm::vec2 lo, glm::vec2 hi) {
     add_quad(out, {lo, 0.0f}, {hi.x, lo.y, 0.0f}, {hi, 0.0f}, {lo.x, hi.y, 0.0f}, lo, {hi.x, lo.y},
@@ -265,6 +283,7 @@ TableMesh build_table_mesh(const physics::Table& table) {
     add_cloth(m.cloth, {-out, -out}, {L + out, W + out}, pocket_holes(table));
     for (const auto& l : table.lines)
         if (l.rail >= 0) add_cushion(m.cushions, outline_of(table, l), d);
+    if (table.pockets.empty()) add_cushion_corners(m.cushions, L, W, d);
 
     // Wooden rails: four trapezoids at rail height, a rounded outer edge, and the sides.
     const float h = d.rail_height, bevel = 0.012f;

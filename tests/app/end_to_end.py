@@ -11,6 +11,10 @@ information bar, whose turn, whether the balls move, where the panel's buttons a
       hook --players random,random) ends with the winner in the information bar
   end_to_end.py hinted COOLAABER WORKDIR     a human plays a whole game against the AI: Hint,
       then a right click to strike, every turn (needs a build with src/ai)
+  end_to_end.py snooker COOLAABER WORKDIR    a snooker frame from New Game: a stroke, the
+      scoreboard and the words, the after-foul choice, both views
+  end_to_end.py three_cushion COOLAABER WORKDIR   a three-cushion game from New Game: a stroke,
+      its words, the innings, both views
 """
 import base64
 import json
@@ -540,10 +544,97 @@ def practice(exe, work):
         g.close()
 
 
+def start_from_new_game(g, game):
+    """New Game..., pick `game` (its radio button's label), Start; waits for the first turn."""
+    g.wait(lambda s: not s["busy"] and s["frames"] >= 4, 30, "the first frames")
+    g.click_widget("New Game...")
+    g.click_widget(game)
+    g.click_widget("Start")
+    return g.wait(lambda s: s["match"] is not None and s["phase"] == "shoot" and not s["busy"], 30, game)
+
+
+def snooker(exe, work):
+    """Snooker from New Game: the cue ball in hand in the D, a red on, 147 remaining; a stroke
+    scores or fouls and the scoreboard and the words agree; after a foul the incoming player's
+    choice is offered as buttons and taken; both views drawn."""
+    import re
+    g = Game(exe, work, "--view", "overhead", "--seed", "2")
+    try:
+        s = start_from_new_game(g, "Snooker")
+        m = s["match"]
+        check(m["game"] == "snooker" and m["in_hand"] and m["scores"] == [0, 0] and m["remaining"] == 147,
+              f"a frame set up, the cue ball in hand: {m}")
+        check(s["info"][0] == "Player 1 to play — on: a red", f"the information bar: {s['info']}")
+        check(s["info"][1] == "Ball in hand: place the cue ball in the D", f"in the D: {s['info']}")
+        time.sleep(0.5)
+        g.screenshot("snooker-1-setup.png")
+        key(g, "space")
+        g.wait(lambda s: s["moving"], 10, "the stroke")
+        s = g.wait(lambda s: not s["moving"] and not s["busy"], 60, "the balls to stop")
+        m, words = s["match"], s["last_shot"]
+        foul = re.match(r"Foul: (\d) points to Player 2 — ", words)
+        pot = re.match(r"Player 1 pots (.*): (\d) points?, break (\d+)\.", words)
+        check(foul or pot or words.startswith("No score for Player 1."), f"the stroke in words: {words!r}")
+        if foul:
+            check(m["scores"] == [0, int(foul.group(1))] and m["choices"] >= 2,
+                  f"the foul's points are Player 2's ({m}) and he chooses")
+            check("Foul by Player 1: Player 2 chooses" == s["info"][0], f"info: {s['info']}")
+            g.screenshot("snooker-2-foul.png")
+            g.click_widget("Ask Player 1 to play again")
+            s = g.wait(lambda s: s["match"]["choices"] == 0 and not s["busy"], 10, "the choice taken")
+            check(s["to_act"] == "Player 1" and s["last_shot"] == "Player 2 asks Player 1 to play again.",
+                  f"Player 1 plays again: {s['last_shot']!r}")
+        elif pot:
+            check(m["scores"][0] == int(pot.group(2)) == m["break"], f"the scoreboard: {m}")
+        board = f"Player 1 {m['scores'][0]} – {m['scores'][1]} Player 2 · break {m['break']} · {m['remaining']} remaining"
+        check(board in s["info"], f"the scores in the information bar: {s['info']}")
+        overhead = g.screenshot("snooker-3-overhead.png")
+        g.click_widget("Change View")
+        g.wait(lambda s: s["view"] == "cueball", 10, "the cue-ball view")
+        time.sleep(2.5)
+        cueview = g.screenshot("snooker-4-cue-ball-view.png")
+        check(differing_pixels(overhead, cueview) > 20000, "the cue-ball view shows the table from the cue ball")
+    finally:
+        g.close()
+
+
+def three_cushion(exe, work):
+    """Three-cushion from New Game: the white opens at the red; a stroke's words say what it
+    did (point, or no point and why) and the scoreboard's innings follow; both views drawn."""
+    g = Game(exe, work, "--view", "overhead", "--seed", "2")
+    try:
+        s = start_from_new_game(g, "Three-cushion")
+        m = s["match"]
+        check(m["game"] == "three_cushion" and m["cue_ball"] == 0 and m["innings"] == [1, 0],
+              f"Player 1 opens with the white: {m}")
+        check(s["info"][0] == "Player 1 to play the white — inning 1", f"info: {s['info']}")
+        time.sleep(0.5)
+        g.screenshot("carom-1-start.png")
+        key(g, "space")
+        g.wait(lambda s: s["moving"], 10, "the stroke")
+        s = g.wait(lambda s: not s["moving"] and not s["busy"], 60, "the balls to stop")
+        m, words = s["match"], s["last_shot"]
+        if words.startswith("Point:"):
+            check(m["scores"] == [1, 0] and s["to_act"] == "Player 1", f"a point, Player 1 goes on: {m}")
+        else:
+            check(words.startswith("No point:") or words.startswith("Foul:"), f"the stroke in words: {words!r}")
+            check(m["scores"] == [0, 0] and m["innings"] == [1, 1] and m["cue_ball"] == 1,
+                  f"the inning passes to Player 2 and the yellow: {m}")
+            check(s["info"][0] == "Player 2 to play the yellow — inning 1", f"info: {s['info']}")
+        overhead = g.screenshot("carom-2-overhead.png")
+        g.click_widget("Change View")
+        g.wait(lambda s: s["view"] == "cueball", 10, "the cue-ball view")
+        time.sleep(2.5)
+        cueview = g.screenshot("carom-3-cue-ball-view.png")
+        check(differing_pixels(overhead, cueview) > 20000, "the cue-ball view shows the table from the cue ball")
+    finally:
+        g.close()
+
+
 if __name__ == "__main__":
     test, exe, work = sys.argv[1], sys.argv[2], sys.argv[3]
     {"controls": controls, "game": whole_game, "hinted": hinted_game, "display": no_display,
      "choice": no_choice_after_scratch, "kitchen": kitchen_foul, "guide": guide_marks,
      "resize": resize, "shot": shared_shot,
-     "practice": practice}[test](exe, work)
+     "practice": practice, "snooker": snooker, "three_cushion": three_cushion}[test](exe, work)
     print("passed")

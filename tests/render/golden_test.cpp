@@ -30,6 +30,7 @@ class GoldenTest : public ::testing::Test {
     static render::Image draw(const render::DemoScene& scene, bool cache_table = true) {
         render::RenderSettings settings;
         settings.cache_table = cache_table;
+        settings.look = scene.look;
         render::Renderer renderer(scene.table, scene.ball_radius, settings);
         render::OffscreenTarget target(kWidth, kHeight, 4);
         target.bind();
@@ -174,6 +175,18 @@ TEST_F(GoldenTest, CachedTableMatchesDrawnTable) {
     const render::DemoScene scene = render::mid_game_scene(kAspect);
     const render::ImageDiff d = render::compare(draw(scene, true), draw(scene, false), 0);
     EXPECT_EQ(d.max_channel_diff, 0);
+}
+
+TEST_F(GoldenTest, SnookerTableOverhead) {
+    check("snooker_overhead", draw(render::snooker_scene(kAspect)));
+}
+
+TEST_F(GoldenTest, SnookerCueBallView) {
+    check("snooker_cue_view", draw(render::snooker_cue_view_scene(kAspect)));
+}
+
+TEST_F(GoldenTest, CaromTableOverhead) {
+    check("carom_overhead", draw(render::carom_scene(kAspect)));
 }
 
 }  // namespace

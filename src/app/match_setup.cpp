@@ -1,0 +1,27 @@
+#include "app/match_setup.hpp"
+
+namespace app {
+
+game::SnookerConfig snooker_config(const NewGame& d) {
+    game::SnookerConfig c;
+    c.options = d.snooker;
+    c.best_of = d.best_of;
+    c.names = d.names;
+    return c;
+}
+
+game::CaromConfig carom_config(const NewGame& d) {
+    game::CaromConfig c;
+    c.options = d.carom;
+    c.names = d.names;
+    return c;
+}
+
+void start_match(Controller& c, const NewGame& d, ControllerOptions options) {
+    if (d.table == TableGame::snooker)
+        c.start_snooker(game::SnookerSession(snooker_config(d)), std::move(options));
+    else if (d.table == TableGame::three_cushion)
+        c.start_carom(game::CaromSession(carom_config(d)), std::move(options));
+}
+
+}  // namespace app
