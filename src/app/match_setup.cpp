@@ -1,19 +1,21 @@
 #include "app/match_setup.hpp"
 
+#include "app/seats.hpp"
+
 namespace app {
 
 game::SnookerConfig snooker_config(const NewGame& d) {
     game::SnookerConfig c;
     c.options = d.snooker;
     c.best_of = d.best_of;
-    c.names = d.names;
+    c.names = seat_names(d.names, d.players);
     return c;
 }
 
 game::CaromConfig carom_config(const NewGame& d) {
     game::CaromConfig c;
     c.options = d.carom;
-    c.names = d.names;
+    c.names = seat_names(d.names, d.players);
     return c;
 }
 

@@ -138,8 +138,7 @@ void new_game_dialog(PanelState& st, PanelActions& out) {
     ImGui::EndDisabled();
     std::vector<std::string> kinds{"human", "random"};
     for (int level = 1; level <= 5; ++level) kinds.push_back(fmt::format("ai:{}", level));
-    if (!pool) match_seats(d);
-    if (pool && !d.practice)
+    if (!d.practice)
         for (std::size_t seat = 0; seat < 2; ++seat) seat_row(d, seat, kinds);
     if (auto g = aim_guide_combo(st, d.aim_guide)) d.aim_guide = *g;
     match_rules_editor(d, st);

@@ -117,22 +117,6 @@ void match_rules_editor(NewGame& d, PanelState& st) {
     }
 }
 
-void match_seats(NewGame& d) {
-    for (std::size_t seat = 0; seat < 2; ++seat) {
-        ImGui::PushID(static_cast<int>(seat));
-        char buf[41];
-        std::snprintf(buf, sizeof buf, "%s", d.names[seat].c_str());
-        ImGui::SetNextItemWidth(px(150));
-        if (ImGui::InputText("##name", buf, sizeof buf) && buf[0] != '\0') d.names[seat] = buf;
-        ImGui::SameLine();
-        ImGui::BeginDisabled();
-        ImGui::TextUnformatted("Human");
-        ImGui::EndDisabled();
-        ImGui::PopID();
-    }
-    ImGui::TextDisabled("Computer players for this game are not in the app yet.");
-}
-
 void match_title(const Controller& c) {
     if (const game::SnookerSession* s = c.snooker())
         ImGui::TextDisabled("Snooker  frame %d", s->frame_number() + 1);

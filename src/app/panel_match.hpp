@@ -11,9 +11,6 @@ namespace app {
 void table_game_choice(NewGame& d, PanelState& st);
 /// Snooker: the miss rule, best of N frames; three-cushion: points to win, equal innings.
 void match_rules_editor(NewGame& d, PanelState& st);
-/// The seats of a snooker or three-cushion game: names; both played at the table (no
-/// computer player for these games in the app yet).
-void match_seats(NewGame& d);
 /// "Snooker  frame 2" / "Three-cushion  game 1" under the title.
 void match_title(const Controller& c);
 /// Snooker: both scores, the break, points remaining, snookers required, frames won;
