@@ -349,9 +349,9 @@ void Controller::update(double dt) {
         if (computer_aim_left_ <= 0.0 || options_.playback_speed <= 0.0) {
             const rules::Player p = *session_.to_act();
             const double scale = options_.noise * computers_[rules::index(p)]->execution_noise();
-            // The computer's cue is raised by the rail as a human's is (a shared link's
-            // stroke is played exactly as it was recorded).
-            play(played(game::with_noise(computer_decision_->stroke, scale, noise_rng_)));
+            // Played as planned: the AI's simulations don't lift the cue over the rail, so
+            // lifting it here would play a stroke it never weighed (docs/app.md).
+            play(game::with_noise(computer_decision_->stroke, scale, noise_rng_));
         }
     }
 }

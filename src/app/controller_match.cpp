@@ -153,7 +153,7 @@ bool Controller::update_match_computer(double dt) {
     const double own =
         snooker_ ? snooker_players_[seat]->execution_noise : carom_players_[seat]->execution_noise;
     const physics::Stroke k =
-        played(game::with_noise(match_decision_->stroke, options_.noise * own, noise_rng_));
+        game::with_noise(match_decision_->stroke, options_.noise * own, noise_rng_);
     match_decision_.reset();
     play_match(k);
     return true;

@@ -117,6 +117,42 @@ TEST(MatchController, RandomSeatsPlayAThreeCushionGameToTheEnd) {
     EXPECT_EQ(c.carom()->game_number(), 1);
 }
 
+// The computer's seats are the AI's players (app/seats.cpp): a level-5 snooker player breaks
+// from the D without a foul; a level-5 three-cushion player opens on the red.
+TEST(MatchController, ComputerSeatsPlaySnookerStrokesThroughTheAi) {
+    ControllerOptions o = options("ai:5", "ai:5");
+    o.playback_speed = 0.0;
+    Controller c(app_test::new_session(), o);
+    c.start_snooker(snooker_match(), o);
+    EXPECT_FALSE(c.human_to_act());
+    EXPECT_EQ(c.snooker()->config().names[0], "Ann");
+    for (int i = 0; i < 20000 && c.shot_serial() == 0; ++i) {
+        c.wait_for_computer();
+        c.update(0.05);
+    }
+    ASSERT_EQ(c.shot_serial(), 1);
+    ASSERT_TRUE(c.snooker()->last_verdict());
+    EXPECT_FALSE(c.snooker()->last_verdict()->foul) << c.last_shot_words();
+    EXPECT_TRUE(c.snooker()->marks().marks.in_d(c.snooker()->before().positions.at(sb::cue)))
+        << "the break is played from the D";
+}
+
+TEST(MatchController, ComputerSeatsScoreTheThreeCushionOpening) {
+    ControllerOptions o = options("ai:5", "human");
+    o.playback_speed = 0.0;
+    o.noise = 0.0;  // the plan as struck: it scores (with noise, a point is a chance)
+    Controller c(app_test::new_session(), o);
+    c.start_carom(carom_game(), o);
+    EXPECT_FALSE(c.human_to_act());
+    for (int i = 0; i < 20000 && c.shot_serial() == 0; ++i) {
+        c.wait_for_computer();
+        c.update(0.05);
+    }
+    ASSERT_EQ(c.shot_serial(), 1);
+    run_until_idle(c);
+    EXPECT_EQ(c.last_shot_words().rfind("Point", 0), 0u) << c.last_shot_words();
+}
+
 TEST(MatchController, ANewPoolGameAfterSnookerIsPoolAgain) {
     Controller c(app_test::new_session(), options());
     c.start_snooker(snooker_match(), options());
