@@ -89,7 +89,7 @@ void seat_row(NewGame& d, std::size_t seat, const std::vector<std::string>& kind
     ImGui::SetNextItemWidth(px(150));
     if (ImGui::InputText("##name", buf, sizeof buf) && buf[0] != '\0') d.names[seat] = buf;
     ImGui::SameLine();
-    ImGui::SetNextItemWidth(px(130));
+    ImGui::SetNextItemWidth(px(180));
     const std::string& current = d.players[seat];
     if (ImGui::BeginCombo("##kind", seat_words(current).c_str())) {
         for (const std::string& k : kinds) {
@@ -126,7 +126,7 @@ void new_game_dialog(PanelState& st, PanelActions& out) {
         ImGui::OpenPopup("New Game");
         st.new_game_open = false;
     }
-    ImGui::SetNextWindowSize(ImVec2(px(360), 0), ImGuiCond_Appearing);
+    ImGui::SetNextWindowSize(ImVec2(px(400), 0), ImGuiCond_Appearing);
     if (!ImGui::BeginPopupModal("New Game", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
     NewGame& d = st.draft;
     table_game_choice(d, st);
