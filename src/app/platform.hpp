@@ -1,0 +1,66 @@
+// The platform layer: everything that touches the window system, input, the clipboard, timing
+// and the main loop. One implementation per platform, chosen by CMake (src/app/CMakeLists.txt):
+// platform_desktop.cpp (SDL2) and platform_web.cpp (Emscripten's GLFW, the browser's loop).
+// The game's frame (app.cpp) sees only this header.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace app::platform {
+
+/// The keys the table answers (docs/app.md, "Playing").
+enum class Key { other, left, right, up, down, space, v, s, enter, p, h, g, o, r, escape, f11 };
+
+/// One input or window event, in the window's pixels.
+struct Event {
+    enum class Kind { quit, motion, button, wheel, key, resized, other };  ///< other: for ImGui
+    Kind kind = Kind::motion;
+    double x = 0, y = 0;  ///< motion, button (unit: px)
+    int button = 0;       ///< 0 left, 1 right, 2 middle
+    bool down = false;    ///< button
+    float wheel = 0;      ///< wheel steps, up positive
+    Key key = Key::other;
+    bool shift = false, ctrl = false;  ///< key, motion
+    int width = 0, height = 0;         ///< resized (unit: px), not in fullscreen
+};
+
+/// The game's window with its OpenGL (desktop) or WebGL 2 (web) context, and Dear ImGui's
+/// platform and renderer backends once start_imgui is called.
+class Window {
+  public:
+    /// Opens the window; empty, and `why` set to one line for the player, when it cannot.
+    static std::unique_ptr<Window> open(int width, int height, bool fullscreen, std::string& why);
+    virtual ~Window() = default;
+
+    /// Starts ImGui's backends (the ImGui context exists already); stop_imgui before it goes.
+    virtual void start_imgui() = 0;
+    virtual void stop_imgui() = 0;
+    /// The events since the last call, waiting up to `wait_ms` for one when there are none
+    /// (0: no wait; the web never waits, the browser calls the next frame).
+    virtual std::vector<Event> events(int wait_ms) = 0;
+    /// ImGui's new frame for both backends (before ImGui::NewFrame).
+    virtual void new_imgui_frame() = 0;
+    virtual void present() = 0;
+    /// The drawable's size (unit: px).
+    virtual std::pair<int, int> drawable_size() const = 0;
+    /// The display's dots per inch, 0 when unknown.
+    virtual float dpi() const = 0;
+    virtual bool fullscreen() const = 0;
+    virtual void set_fullscreen(bool on) = 0;
+    virtual bool shift_held() const = 0;
+    /// The clipboard's text ("" when empty or unreadable).
+    virtual std::string clipboard() const = 0;
+    /// Writes the clipboard; the reason when it could not.
+    virtual std::optional<std::string> set_clipboard(const std::string& text) = 0;
+};
+
+/// Calls `frame` until it returns false: a loop on the desktop; on the web, once per animation
+/// frame of the browser, returning at once (the page lives on).
+void run(std::function<bool()> frame);
+
+}  // namespace app::platform
