@@ -55,6 +55,7 @@ class WindowLoop {
     bool update();
     void draw();
     void write_status(const SceneFrame& scene, int w, int h, const PanelLayout& layout);
+    void keep_saved();
     void paint_the_session_table();
 
     std::unique_ptr<platform::Window> window_;
@@ -72,6 +73,7 @@ class WindowLoop {
     int warm_frames_ = 2;
     bool drew_moving_ = false;  // the last frame was drawn for a moving camera (smaller, 1×)
     long frames_ = 0;
+    std::pair<int, int> saved_at_;  // the shot and game last saved (saves_as_it_goes)
     std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
@@ -85,7 +87,8 @@ WindowLoop::WindowLoop(GameSetup setup, std::unique_ptr<platform::Window> window
                  return table_point(t_.last_camera, painter_->view_width(), painter_->height(), x,
                                     y, R);
              }),
-      sound_serial_(t_.controller.shot_serial()) {
+      sound_serial_(t_.controller.shot_serial()),
+      saved_at_(t_.controller.shot_serial(), t_.controller.session().game_number()) {
     create_imgui();
     window_->start_imgui();
     sound_.set_muted(!t_.setup.settings.sound);
@@ -105,7 +108,7 @@ void WindowLoop::paint_the_session_table() {
     if (table_key(t_.controller.session()) == painted_) return;
     painted_ = table_key(t_.controller.session());
     painter_.emplace(t_.controller.session().table(),
-                     t_.controller.session().config().params.ball_radius);
+                     t_.controller.session().config().params.ball_radius, window_->table_samples());
 }
 
 // A camera that has just stopped gets one more frame, drawn in full.
@@ -120,7 +123,23 @@ bool WindowLoop::frame() {
     if (t_.exit_requested) return false;
     const bool changed = update();
     if (had_event || changed) draw();
+    keep_saved();
     return !t_.exit_requested;
+}
+
+// Where the game has no exit to save on, it is saved each time the balls come to rest.
+void WindowLoop::keep_saved() {
+    if (!window_->saves_as_it_goes() || t_.controller.moving()) return;
+    const std::pair<int, int> now(t_.controller.shot_serial(),
+                                  t_.controller.session().game_number());
+    if (now == saved_at_) return;
+    saved_at_ = now;
+    const std::string err = t_.save_game();
+    if (!err.empty()) {
+        t_.panel.notice = "The game could not be saved: " + err;
+        t_.panel.notice_is_error = true;
+    }
+    window_->files_written();
 }
 
 // Waits for an event when nothing moves; true when there was one.
@@ -171,6 +190,8 @@ void WindowLoop::on_event(const platform::Event& e) {
             t_.setup.settings.window_width = e.width;
             t_.setup.settings.window_height = e.height;
             return;
+        case Kind::link:
+            return t_.open_link(e.text, Table::LinkFrom::address);
         case Kind::other:
             return;
     }
@@ -220,8 +241,10 @@ void WindowLoop::draw() {
                    static_cast<float>(h), layout.width);
     ImGui::Render();
     t_.apply(actions, window_.get());
-    if (!mouse_down_[0] && !mouse_down_[1] && !mouse_down_[2])
+    if (!mouse_down_[0] && !mouse_down_[1] && !mouse_down_[2] && !(t_.setup.settings == t_.saved)) {
         t_.persist_settings();  // not mid-drag
+        window_->files_written();
+    }
     const float aspect =
         static_cast<float>(painter_->view_width()) / static_cast<float>(painter_->height());
     const render::Camera previous = t_.last_camera;

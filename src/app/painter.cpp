@@ -8,7 +8,8 @@
 
 namespace app {
 
-Painter::Painter(const physics::Table& table, double ball_radius) : renderer_(table, ball_radius) {}
+Painter::Painter(const physics::Table& table, double ball_radius, int samples)
+    : renderer_(table, ball_radius), samples_(samples) {}
 
 void Painter::resize(int width, int height, int panel_width) {
     width = std::max(width, 64);
@@ -17,7 +18,7 @@ void Painter::resize(int width, int height, int panel_width) {
     width_ = width;
     height_ = height;
     panel_ = panel_width;
-    view_ = std::make_unique<render::OffscreenTarget>(view_width(), height_, 4);
+    view_ = std::make_unique<render::OffscreenTarget>(view_width(), height_, samples_);
     moving_.reset();
     picture_.reset();
 }

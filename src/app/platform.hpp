@@ -18,7 +18,8 @@ enum class Key { other, left, right, up, down, space, v, s, enter, p, h, g, o, r
 
 /// One input or window event, in the window's pixels.
 struct Event {
-    enum class Kind { quit, motion, button, wheel, key, resized, other };  ///< other: for ImGui
+    /// link: a shot link to open (the web page's address changed to one); other: for ImGui
+    enum class Kind { quit, motion, button, wheel, key, resized, link, other };
     Kind kind = Kind::motion;
     double x = 0, y = 0;  ///< motion, button (unit: px)
     int button = 0;       ///< 0 left, 1 right, 2 middle
@@ -27,6 +28,13 @@ struct Event {
     Key key = Key::other;
     bool shift = false, ctrl = false;  ///< key, motion
     int width = 0, height = 0;         ///< resized (unit: px), not in fullscreen
+    std::string text;                  ///< link
+
+    static Event of(Kind k) {
+        Event e;
+        e.kind = k;
+        return e;
+    }
 };
 
 /// The game's window with its OpenGL (desktop) or WebGL 2 (web) context, and Dear ImGui's
@@ -53,10 +61,19 @@ class Window {
     virtual bool fullscreen() const = 0;
     virtual void set_fullscreen(bool on) = 0;
     virtual bool shift_held() const = 0;
+    /// The still table view's multisampling (app/painter.hpp).
+    virtual int table_samples() const = 0;
     /// The clipboard's text ("" when empty or unreadable).
     virtual std::string clipboard() const = 0;
-    /// Writes the clipboard; the reason when it could not.
-    virtual std::optional<std::string> set_clipboard(const std::string& text) = 0;
+    /// Puts a shot link (game/shot_link.hpp) on the clipboard: as it is on the desktop, as the
+    /// page's address with the link as its fragment on the web. The reason when it could not.
+    virtual std::optional<std::string> copy_link(const std::string& link) = 0;
+    /// True where the game has no exit to save on (a web page is closed or reloaded at any
+    /// time): the game is then saved whenever a shot ends.
+    virtual bool saves_as_it_goes() const = 0;
+    /// The game's files (settings, saved game) were written: the web keeps them in the
+    /// browser's storage (IndexedDB) from here.
+    virtual void files_written() = 0;
 };
 
 /// Calls `frame` until it returns false: a loop on the desktop; on the web, once per animation

@@ -123,7 +123,7 @@ class SdlWindow final : public Window {
             have = false;
             ImGui_ImplSDL2_ProcessEvent(&e);
             // An event the game does not answer still counts: ImGui may have (a redraw).
-            out.push_back(event_of(e, window_).value_or(Event{Event::Kind::other}));
+            out.push_back(event_of(e, window_).value_or(Event::of(Event::Kind::other)));
         }
         return out;
     }
@@ -149,16 +149,19 @@ class SdlWindow final : public Window {
         SDL_SetWindowFullscreen(window_, on ? SDL_WINDOW_FULLSCREEN_DESKTOP : 0);
     }
     bool shift_held() const override { return (SDL_GetModState() & KMOD_SHIFT) != 0; }
+    int table_samples() const override { return 4; }
     std::string clipboard() const override {
         char* text = SDL_GetClipboardText();
         std::string out = text ? text : "";
         SDL_free(text);
         return out;
     }
-    std::optional<std::string> set_clipboard(const std::string& text) override {
-        if (SDL_SetClipboardText(text.c_str()) != 0) return std::string(SDL_GetError());
+    std::optional<std::string> copy_link(const std::string& link) override {
+        if (SDL_SetClipboardText(link.c_str()) != 0) return std::string(SDL_GetError());
         return std::nullopt;
     }
+    bool saves_as_it_goes() const override { return false; }  // saved on exit
+    void files_written() override {}
 
   private:
     SDL_Window* window_;

@@ -63,18 +63,20 @@ void Table::copy_link(platform::Window& window) {
     const ShotToShare s =
         shot_to_share(controller.session(), controller.stroke_of(controller.aim()));
     if (!s.shot) return note_link(s.why_not, true);
-    if (const std::optional<std::string> why = window.set_clipboard(game::shot_link(*s.shot)))
+    if (const std::optional<std::string> why = window.copy_link(game::shot_link(*s.shot)))
         return note_link("The clipboard could not be written: " + *why, true);
     note_link(copied_notice(*s.shot, !controller.session().history().empty()), false);
 }
 
-void Table::open_link(const std::string& text) {
+void Table::open_link(const std::string& text, LinkFrom from) {
+    const bool pasted = from == LinkFrom::paste;
     game::SharedShot shot;
     try {
         shot = game::read_shot_link(text);
     } catch (const game::LoadError& e) {
         return note_link(
-            std::string("The pasted text is not a shot link this game can open: ") + e.what(),
+            std::string(pasted ? "The pasted text is not" : "The page's address does not hold") +
+                " a shot link this game can open: " + e.what(),
             true);
     }
     ControllerOptions opts = setup.controller;
@@ -83,13 +85,16 @@ void Table::open_link(const std::string& text) {
     controller.replace(session_of(shot, seat_names(setup.settings.names, opts.players), opts.seed),
                        opts);
     controller.play_shared(shot.stroke);
-    note_link("Opened the pasted shot link: Replay (P) shows it again, or play on.", false);
+    note_link(std::string(pasted ? "Opened the pasted shot link"
+                                 : "Opened the shot link in the page's address") +
+                  ": Replay (P) shows it again, or play on.",
+              false);
 }
 
 void Table::paste_link(const platform::Window& window) {
     const std::string pasted = window.clipboard();
     if (pasted.empty()) return note_link("The clipboard is empty: copy a shot link first.", true);
-    open_link(pasted);
+    open_link(pasted, LinkFrom::paste);
 }
 
 void Table::start_practice(rules::Game game) {
@@ -204,11 +209,14 @@ void Table::persist_settings() {
     }
 }
 
-void Table::save_and_close() {
+std::string Table::save_game() const {
     // Practice is not a game: the game saved before it stays as it was.
-    const std::string err = controller.practicing()
-                                ? std::string()
-                                : save_on_exit(controller.session(), setup.autosave_path);
+    return controller.practicing() ? std::string()
+                                   : save_on_exit(controller.session(), setup.autosave_path);
+}
+
+void Table::save_and_close() {
+    const std::string err = save_game();
     if (!err.empty()) std::fprintf(stderr, "coolaaber: the game was not saved: %s\n", err.c_str());
     if (setup.settings_path.empty()) return;
     try {

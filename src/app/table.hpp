@@ -32,9 +32,10 @@ struct Table {
     void note_link(std::string text, bool is_error);
     /// Copy shot link: the last shot (or the shot as aimed) as link text on the clipboard.
     void copy_link(platform::Window& window);
+    enum class LinkFrom { paste, address };
     /// Opens a shot link: its position and table, and its stroke played at once. A bad link is
     /// reported and the game is left as it was.
-    void open_link(const std::string& text);
+    void open_link(const std::string& text, LinkFrom from);
     void paste_link(const platform::Window& window);
     void start_practice(rules::Game game);
     void save_position();
@@ -48,6 +49,9 @@ struct Table {
     /// Writes the settings when they changed (the Sound checkbox, the power, the view...), so
     /// they persist at once and not only on Exit.
     void persist_settings();
+    /// Saves an unfinished game where the next run resumes it (a finished one's save is
+    /// removed); an error message or empty.
+    std::string save_game() const;
     void save_and_close();
 
   private:
