@@ -177,6 +177,22 @@ async function strike(g) {
   return g.wait((s) => !s.moving && !s.busy, 60, 'the balls to stop');
 }
 
+// The desktop build's engine (coolaaber-cli simulate) plays the link's stroke from its position:
+// the web page's balls must rest at the same numbers, bit for bit (both print round-trip decimals).
+function nativeAgrees(link, webPositions) {
+  const cli = path.join(repo, 'build/release/src/cli/coolaaber-cli');
+  if (!fs.existsSync(cli)) return console.log(`skipped: the native comparison (no ${cli})`);
+  const shot = JSON.parse(Buffer.from(link.split('#shot=1.')[1].split('.')[1], 'base64url').toString());
+  const params = Object.fromEntries(Object.entries(shot.params).filter(([, v]) => v !== null));
+  const balls = Object.entries(shot.state.positions).map(([id, pos]) => ({id: Number(id), pos}));
+  const out = JSON.parse(execFileSync(cli, ['simulate'], {
+    input: JSON.stringify({table: shot.table, params, balls, strike: shot.stroke})}));
+  const native = Object.fromEntries(out.final.filter((b) => b.pos !== null).map((b) => [String(b.id), b.pos]));
+  const differ = Object.keys(native).filter((id) => JSON.stringify(native[id]) !== JSON.stringify(webPositions[id]));
+  check(differ.length === 0 && Object.keys(native).length === Object.keys(webPositions).length,
+        `the native engine puts every ball where the page does, bit for bit (${Object.keys(native).length} balls)`);
+}
+
 // The game is kept in the browser's storage as the balls stop: a reload resumes it.
 async function resumeAndLinks(browser, base, errors) {
   let {g, page} = await open(browser, `${base}?status=1&seed=5&game=8ball`, errors);
@@ -200,6 +216,7 @@ async function resumeAndLinks(browser, base, errors) {
   check(JSON.stringify(s.positions) === JSON.stringify(after.positions),
         'the link (the last shot: the break) replays exactly that shot: every ball ends where it did');
   check(s.link_note.startsWith('Opened the shot link'), `the information bar says: ${s.link_note}`);
+  nativeAgrees(link, s.positions);
   await other.page.close();
 
   const bad = link.replace(/#shot=1\.(.)/, (m, c) => `#shot=1.${c === '0' ? '1' : '0'}`);
