@@ -98,6 +98,7 @@ class WebWindow final : public Window {
         glfwSetCharCallback(window_, [](GLFWwindow* w, unsigned) {
             self(w).queue_.push_back(Event::of(Event::Kind::other));
         });
+        listen_to_touch();
     }
     ~WebWindow() override {
         glfwDestroyWindow(window_);
@@ -176,6 +177,45 @@ class WebWindow final : public Window {
     }
 
   private:
+    // One finger is the left mouse button (aim without striking, drag the ball in hand, press
+    // the panel's Strike): Emscripten's GLFW would press it at the last mouse position, so its
+    // own touch listeners are replaced.
+    void listen_to_touch() {
+        EM_ASM({
+            var canvas = Module['canvas'];
+            canvas.removeEventListener('touchstart', GLFW.onMouseButtonDown, true);
+            canvas.removeEventListener('touchmove', GLFW.onMousemove, true);
+            canvas.removeEventListener('touchend', GLFW.onMouseButtonUp, true);
+            canvas.removeEventListener('touchcancel', GLFW.onMouseButtonUp, true);
+        });
+        emscripten_set_touchstart_callback("#canvas", this, true, on_touch);
+        emscripten_set_touchmove_callback("#canvas", this, true, on_touch);
+        emscripten_set_touchend_callback("#canvas", this, true, on_touch);
+        emscripten_set_touchcancel_callback("#canvas", this, true, on_touch);
+    }
+
+    static EM_BOOL on_touch(int type, const EmscriptenTouchEvent* t, void* data) {
+        auto& me = *static_cast<WebWindow*>(data);
+        for (int i = 0; i < t->numTouches; ++i) {
+            const EmscriptenTouchPoint& p = t->touches[i];
+            if (!p.isChanged) continue;
+            const bool start = type == EMSCRIPTEN_EVENT_TOUCHSTART;
+            if (start && me.finger_ < 0) me.finger_ = p.identifier;
+            if (p.identifier != me.finger_) continue;
+            Event e = Event::of(Event::Kind::motion);
+            e.x = static_cast<double>(p.targetX);
+            e.y = static_cast<double>(p.targetY);
+            me.queue_.push_back(e);
+            if (type == EMSCRIPTEN_EVENT_TOUCHMOVE) continue;
+            e.kind = Event::Kind::button;
+            e.button = 0;
+            e.down = start;
+            me.queue_.push_back(e);
+            if (!start) me.finger_ = -1;
+        }
+        return EM_TRUE;  // no mouse events made up from the touch, no scrolling
+    }
+
     static WebWindow& self(GLFWwindow* w) {
         return *static_cast<WebWindow*>(glfwGetWindowUserPointer(w));
     }
@@ -208,6 +248,7 @@ class WebWindow final : public Window {
     GLFWwindow* window_;
     std::vector<Event> queue_;
     std::string address_;
+    long finger_ = -1;  ///< the touch that is the mouse
 };
 
 }  // namespace

@@ -87,9 +87,9 @@ class Game {
   }
 }
 
-async function open(browser, url, errors, page = null) {
+async function open(browser, url, errors, page = null, desktop = true) {
   page = page || await browser.newPage();
-  await page.setViewport({width: 1280, height: 720});
+  if (desktop) await page.setViewport({width: 1280, height: 720});
   page.on('console', (m) => {
     if (m.type() === 'error') errors.push(m.text());
     fs.appendFileSync(path.join(work, 'console.txt'), `${m.type()}: ${m.text()}\n`);
@@ -239,6 +239,34 @@ async function computerGame(browser, base, errors) {
   await page.close();
 }
 
+// A phone in landscape (touch, mobile emulation): one finger drags the aim round, the panel's
+// Strike plays the shot at the Power set.
+async function touch(browser, base, errors) {
+  const page = await browser.newPage();
+  await page.setViewport({width: 844, height: 390, isMobile: true, hasTouch: true, deviceScaleFactor: 1});
+  const {g} = await open(browser, `${base}?status=1&seed=4&game=9ball`, errors, page, false);
+  let s = await g.wait((s) => s.phase === 'shoot' && !s.busy && 'Strike' in s.widgets, 30, 'the break');
+  const heading0 = s.heading_deg;
+  await page.touchscreen.touchStart(250, 200);
+  for (let x = 254; x <= 290; x += 6) {
+    await page.touchscreen.touchMove(x, 200);
+    await sleep(30);
+  }
+  await page.touchscreen.touchEnd();
+  s = await g.wait((s) => Math.abs(s.heading_deg - heading0) > 1, 10, 'the aim to turn');
+  await sleep(300);
+  check((await g.read()).shots === 0, `a finger drags the aim round without striking (${heading0} -> ${s.heading_deg} deg)`);
+  await g.screenshot('7-phone-aimed.png');
+  const w = s.widgets.Strike;
+  check(w[2] <= 844 && w[3] <= 390, `the Strike button is on the phone's screen (${w})`);
+  await page.touchscreen.tap((w[0] + w[2]) / 2, (w[1] + w[3]) / 2);
+  s = await g.wait((s) => s.shots === 1, 10, 'the strike');
+  check(Math.abs(s.heading_deg - heading0) > 1, 'tapping Strike plays the shot as aimed');
+  await g.wait((s) => !s.moving && !s.busy, 60, 'the balls to stop');
+  await g.screenshot('8-phone-after-break.png');
+  await page.close();
+}
+
 // A host without the two headers: the service worker adds them (one reload), and keeps the game
 // for offline play.
 async function withoutHeaders(browser, errors) {
@@ -273,6 +301,7 @@ async function withoutHeaders(browser, errors) {
     if (run('controls')) await controls(browser, url, errors);
     if (run('resume')) await resumeAndLinks(browser, url, errors);
     if (run('computer')) await computerGame(browser, url, errors);
+    if (run('touch')) await touch(browser, url, errors);
     if (run('headers')) await withoutHeaders(browser, errors);
     check(errors.length === 0, 'no console errors');
   } finally {
