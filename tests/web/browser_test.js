@@ -162,6 +162,17 @@ async function controls(browser, base, errors) {
   s = await g.wait((s) => s.game_number === 1 && s.shots === 0, 10, 'the new rack');
   check(s.balls_on_table === 15 && s.info[0].endsWith('to break'), 'Restart racks the balls again');
   await g.screenshot('5-restarted.png');
+
+  // Hint thinks on a worker thread: the page answers meanwhile.
+  await g.clickWidget('Hint');
+  s = await g.wait((s) => s.thinking || s.heading_deg !== 0, 10, 'the hint');
+  let slowest = 0;
+  while ((await g.read()).thinking) {
+    const t0 = Date.now();
+    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => r())));
+    slowest = Math.max(slowest, Date.now() - t0);
+  }
+  check(slowest < 500, `the page draws on while Hint thinks (slowest animation frame ${slowest} ms)`);
   await page.close();
 }
 
