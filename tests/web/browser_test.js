@@ -150,6 +150,12 @@ async function controls(browser, base, errors) {
   await g.clickWidget('Change View');
   await g.wait((s) => s.view === 'overhead', 10, 'the overhead view again');
 
+  await page.keyboard.press('v');
+  await g.wait((s) => s.view === 'cueball', 10, 'the cue-ball view by the V key');
+  await page.keyboard.press('v');
+  await g.wait((s) => s.view === 'overhead', 10, 'the overhead view by the V key');
+  check(true, 'the V key changes the view too');
+
   await g.clickWidget('Sound');
   await g.wait((s) => s.sound === false, 10, 'the sound off');
   check(true, 'the Sound checkbox turns the sound off');
