@@ -138,7 +138,12 @@ class WebWindow final : public Window {
         glfwGetFramebufferSize(window_, &w, &h);
         return {w, h};
     }
-    float dpi() const override { return 0.0f; }
+    // The page's pixels are CSS pixels, 96 an inch; with a finger for a pointer (a phone, a
+    // tablet) the panel is laid out as for 144, its controls big enough to tap.
+    float dpi() const override {
+        return EM_ASM_INT({ return matchMedia('(pointer: coarse)').matches ? 1 : 0; }) ? 144.0f
+                                                                                       : 96.0f;
+    }
     bool fullscreen() const override {
         EmscriptenFullscreenChangeEvent s{};
         return emscripten_get_fullscreen_status(&s) == EMSCRIPTEN_RESULT_SUCCESS && s.isFullscreen;
