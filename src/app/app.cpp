@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
@@ -56,6 +57,7 @@ class WindowLoop {
     void draw();
     void write_status(const SceneFrame& scene, int w, int h, const PanelLayout& layout);
     void keep_saved();
+    PanelLayout scaled_panel_layout(int w, int h) const;
     void paint_the_session_table();
 
     std::unique_ptr<platform::Window> window_;
@@ -94,6 +96,8 @@ WindowLoop::WindowLoop(GameSetup setup, std::unique_ptr<platform::Window> window
     sound_.set_muted(!t_.setup.settings.sound);
     paint_the_session_table();
     ui_scale_ = dpi_scale(std::getenv("COOLAABER_UI_SCALE"), window_->dpi());
+    input_.sensitivity.normal /= window_->pixels_per_point();
+    input_.sensitivity.fine /= window_->pixels_per_point();
     if (status_file) status_.emplace(*status_file);
 }
 
@@ -220,9 +224,19 @@ bool WindowLoop::update() {
     return signature() != before;
 }
 
+// The panel laid out in the mouse's units (CSS pixels on the web), then scaled to the drawable.
+PanelLayout WindowLoop::scaled_panel_layout(int w, int h) const {
+    const double ppp = window_->pixels_per_point();
+    PanelLayout layout = panel_layout(static_cast<int>(std::lround(w / ppp)),
+                                      static_cast<int>(std::lround(h / ppp)), ui_scale_);
+    layout.width = std::round(layout.width * static_cast<float>(ppp));
+    layout.scale *= static_cast<float>(ppp);
+    return layout;
+}
+
 void WindowLoop::draw() {
     const auto [w, h] = window_->drawable_size();
-    const PanelLayout layout = panel_layout(w, h, ui_scale_);
+    const PanelLayout layout = scaled_panel_layout(w, h);
     paint_the_session_table();
     painter_->resize(w, h, static_cast<int>(layout.width));
     set_ui_scale(layout.scale);

@@ -56,7 +56,11 @@ class Window {
     virtual void present() = 0;
     /// The drawable's size (unit: px).
     virtual std::pair<int, int> drawable_size() const = 0;
-    /// The display's dots per inch, 0 when unknown (the panel's scale follows it).
+    /// The drawable's pixels per unit of the desktop's mouse (the web: device pixels per CSS
+    /// pixel), so that a mouse's move aims alike on any screen.
+    virtual double pixels_per_point() const = 0;
+    /// The display's dots per inch of the mouse's units, 0 when unknown (the panel's scale
+    /// follows it).
     virtual float dpi() const = 0;
     virtual bool fullscreen() const = 0;
     virtual void set_fullscreen(bool on) = 0;

@@ -138,6 +138,7 @@ class SdlWindow final : public Window {
         SDL_GL_GetDrawableSize(window_, &w, &h);
         return {w, h};
     }
+    double pixels_per_point() const override { return 1.0; }  // no SDL_WINDOW_ALLOW_HIGHDPI
     float dpi() const override {
         float dpi = 0.0f;
         return SDL_GetDisplayDPI(0, nullptr, &dpi, nullptr) == 0 ? dpi : 0.0f;

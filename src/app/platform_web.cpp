@@ -55,12 +55,14 @@ Key key_of(int k) {
     }
 }
 
-// The canvas's size on the page (unit: CSS px).
+// The canvas's pixels: its size on the page (CSS px) times the device's pixels per CSS pixel,
+// so that a high-density screen gets a sharp picture.
 std::pair<int, int> page_size() {
     double w = 0, h = 0;
     emscripten_get_element_css_size("#canvas", &w, &h);
-    return {std::max(1, static_cast<int>(std::lround(w))),
-            std::max(1, static_cast<int>(std::lround(h)))};
+    const double dpr = emscripten_get_device_pixel_ratio();
+    return {std::max(1, static_cast<int>(std::lround(w * dpr))),
+            std::max(1, static_cast<int>(std::lround(h * dpr)))};
 }
 
 class WebWindow final : public Window {
@@ -138,8 +140,9 @@ class WebWindow final : public Window {
         glfwGetFramebufferSize(window_, &w, &h);
         return {w, h};
     }
-    // The page's pixels are CSS pixels, 96 an inch; with a finger for a pointer (a phone, a
-    // tablet) the panel is laid out as for 144, its controls big enough to tap.
+    double pixels_per_point() const override { return emscripten_get_device_pixel_ratio(); }
+    // Per CSS pixel (a 96th of an inch), the panel's unit; with a finger for a pointer (a phone,
+    // a tablet) as for one and a half times that, its controls big enough to tap.
     float dpi() const override {
         return EM_ASM_INT({ return matchMedia('(pointer: coarse)').matches ? 1 : 0; }) ? 144.0f
                                                                                        : 96.0f;
@@ -208,8 +211,9 @@ class WebWindow final : public Window {
             if (start && me.finger_ < 0) me.finger_ = p.identifier;
             if (p.identifier != me.finger_) continue;
             Event e = Event::of(Event::Kind::motion);
-            e.x = static_cast<double>(p.targetX);
-            e.y = static_cast<double>(p.targetY);
+            const double dpr = emscripten_get_device_pixel_ratio();  // CSS px to the canvas's
+            e.x = static_cast<double>(p.targetX) * dpr;
+            e.y = static_cast<double>(p.targetY) * dpr;
             me.queue_.push_back(e);
             if (type == EMSCRIPTEN_EVENT_TOUCHMOVE) continue;
             e.kind = Event::Kind::button;

@@ -276,7 +276,8 @@ async function computerGame(browser, base, errors) {
 // Strike plays the shot at the Power set.
 async function touch(browser, base, errors) {
   const page = await browser.newPage();
-  await page.setViewport({width: 844, height: 390, isMobile: true, hasTouch: true, deviceScaleFactor: 1});
+  const dpr = 2;  // the canvas has the device's pixels; the page's coordinates are CSS pixels
+  await page.setViewport({width: 844, height: 390, isMobile: true, hasTouch: true, deviceScaleFactor: dpr});
   const {g} = await open(browser, `${base}?status=1&seed=4&game=9ball`, errors, page, false);
   let s = await g.wait((s) => s.phase === 'shoot' && !s.busy && 'Strike' in s.widgets, 30, 'the break');
   const heading0 = s.heading_deg;
@@ -290,8 +291,10 @@ async function touch(browser, base, errors) {
   await sleep(300);
   check((await g.read()).shots === 0, `a finger drags the aim round without striking (${heading0} -> ${s.heading_deg} deg)`);
   await g.screenshot('7-phone-aimed.png');
-  const w = s.widgets.Strike;
-  check(w[2] <= 844 && w[3] <= 390, `the Strike button is on the phone's screen (${w})`);
+  check(s.window[0] === 844 * dpr && s.window[1] === 390 * dpr, `the canvas has the screen's pixels (${s.window})`);
+  const w = s.widgets.Strike.map((v) => v / dpr);
+  check(w[2] <= 844 && w[3] <= 390 && w[3] - w[1] >= 24,
+        `the Strike button is on the phone's screen, big enough to tap (${w.map(Math.round)} CSS px)`);
   await page.touchscreen.tap((w[0] + w[2]) / 2, (w[1] + w[3]) / 2);
   s = await g.wait((s) => s.shots === 1, 10, 'the strike');
   check(Math.abs(s.heading_deg - heading0) > 1, 'tapping Strike plays the shot as aimed');
