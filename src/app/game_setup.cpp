@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <cstdio>
 
 #include "app/seats.hpp"
 #include "app/shot_sharing.hpp"
@@ -97,6 +98,15 @@ std::string save_on_exit(const game::Session& session, const std::filesystem::pa
         return e.what();
     }
     return {};
+}
+
+std::optional<GameSetup> set_up_or_report(const AppOptions& options) {
+    try {
+        return set_up_game(options);
+    } catch (const game::LoadError& e) {
+        std::fprintf(stderr, "error: %s\n", e.what());
+        return std::nullopt;
+    }
 }
 
 }  // namespace app

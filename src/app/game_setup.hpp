@@ -35,6 +35,8 @@ game::Config new_game_config(const Settings& settings, std::uint64_t seed);
 /// Throws game::LoadError for a bad --load file or --shot link (the caller reports it and
 /// exits 2).
 GameSetup set_up_game(const AppOptions& options);
+/// set_up_game, or empty with the reason on stderr when a --load file or --shot link is bad.
+std::optional<GameSetup> set_up_or_report(const AppOptions& options);
 
 /// A seed from the clock (a new rack each run), unless one was given.
 std::uint64_t fresh_seed();

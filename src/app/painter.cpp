@@ -18,8 +18,9 @@ render::RenderSettings with_look(render::GameLook look) {
 
 }  // namespace
 
-Painter::Painter(const physics::Table& table, double ball_radius, render::GameLook look)
-    : renderer_(table, ball_radius, with_look(look)) {}
+Painter::Painter(const physics::Table& table, double ball_radius, render::GameLook look,
+                 int samples)
+    : renderer_(table, ball_radius, with_look(look)), samples_(samples) {}
 
 void Painter::resize(int width, int height, int panel_width) {
     width = std::max(width, 64);
@@ -28,7 +29,7 @@ void Painter::resize(int width, int height, int panel_width) {
     width_ = width;
     height_ = height;
     panel_ = panel_width;
-    view_ = std::make_unique<render::OffscreenTarget>(view_width(), height_, 4);
+    view_ = std::make_unique<render::OffscreenTarget>(view_width(), height_, samples_);
     moving_.reset();
     picture_.reset();
 }

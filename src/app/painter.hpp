@@ -14,14 +14,15 @@ namespace app {
 
 class Painter {
   public:
+    /// `samples`: the still table view's multisampling (platform::Window::table_samples).
     Painter(const physics::Table& table, double ball_radius,
-            render::GameLook look = render::GameLook::pool);
+            render::GameLook look = render::GameLook::pool, int samples = 4);
     /// The window's size in pixels (the panel, `panel_width` px at the right, included).
     void resize(int width, int height, int panel_width);
     /// Draws the table into the view at the left (width − panel). While the camera moves
     /// (`camera_moving`: aiming in the cue-ball view, a transition) the view is drawn without
     /// multisampling, which on a software renderer more than doubles the frame rate; a still
-    /// camera gets 4× MSAA (and the renderer's cached table).
+    /// camera gets `samples`× MSAA (and the renderer's cached table where it can).
     void draw_table(const SceneFrame& scene, const render::Camera& camera,
                     bool camera_moving = false);
     /// Shows the table view and the panel in the window's framebuffer (then swap).
@@ -37,6 +38,7 @@ class Painter {
     void compose(unsigned table_image, ImDrawData* panel) const;
 
     render::Renderer renderer_;
+    int samples_;
     std::unique_ptr<render::OffscreenTarget> view_;  ///< the table, multisampled
     std::unique_ptr<render::OffscreenTarget>
         moving_;  ///< the table while the camera moves, 1 sample

@@ -163,10 +163,12 @@ enum class Renamed { yes, name_taken, failed };
 // Renames `from` to `to` unless `to` exists: never replaces a file kept aside before, even by
 // another instance of the game starting at the same moment.
 Renamed rename_no_replace(const std::filesystem::path& from, const std::filesystem::path& to) {
+#ifdef RENAME_NOREPLACE  // Linux; the browser's file system (one page) has no renameat2
     if (::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_NOREPLACE) == 0)
         return Renamed::yes;
     if (errno == EEXIST) return Renamed::name_taken;
     if (errno != EINVAL && errno != ENOSYS) return Renamed::failed;
+#endif
     // A file system without RENAME_NOREPLACE: check, then rename.
     std::error_code ec;
     if (std::filesystem::exists(to, ec)) return Renamed::name_taken;

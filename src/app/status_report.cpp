@@ -94,6 +94,7 @@ std::string status_json(const Controller& c, const Settings& s, CameraMode view,
     j["replaying"] = c.replaying();
     j["tray"] = c.tray();
     j["busy"] = c.busy();
+    j["thinking"] = c.computer_thinking();
     j["view"] = view_name(view);
     j["sound"] = s.sound;
     j["power"] = c.aim().power;

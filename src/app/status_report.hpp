@@ -13,7 +13,8 @@
 
 namespace app {
 
-/// {"phase", "to_act", "moving", "busy", "view", "sound", "power", "shots", "game_number",
+/// {"phase", "to_act", "moving", "busy", "thinking", "view", "sound", "power", "shots",
+/// "game_number",
 ///  "info": [lines], "last_shot", "refusal", "winner", "heading_deg", "cue_ball", "balls_on_table",
 ///  "positions": {"id": [x, y]} (exact), "aim_guide_level", "aim_foul", "call": {"ball",
 ///  "pocket"} or null, "guide_end", "widgets", "frames", "drawn", "link_note", "ball_px": {"id":

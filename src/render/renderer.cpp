@@ -10,6 +10,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <stdexcept>
 #include <utility>
+#include <vector>
 
 #include "physics/markings.hpp"
 #include "render/cue_stick.hpp"
@@ -103,10 +104,19 @@ GLuint upload_texture(const TextureData& t, bool srgb = false) {
     glGenTextures(1, &tex);
     glBindTexture(GL_TEXTURE_2D, tex);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    const GLenum format = t.channels == 1 ? GL_RED : GL_RGB;
-    const GLint internal = t.channels == 1 ? GL_R8 : srgb ? GL_SRGB8 : GL_RGB8;
-    glTexImage2D(GL_TEXTURE_2D, 0, internal, t.width, t.height, 0, format, GL_UNSIGNED_BYTE,
-                 t.pixels.data());
+    if (srgb && t.channels == 3) {
+        // As sRGB with alpha: OpenGL ES 3 (WebGL 2) makes no mipmaps of GL_SRGB8.
+        std::vector<std::uint8_t> rgba(t.pixels.size() / 3 * 4, 255);
+        for (std::size_t i = 0, n = t.pixels.size() / 3; i < n; ++i)
+            std::copy_n(&t.pixels[3 * i], 3, &rgba[4 * i]);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, t.width, t.height, 0, GL_RGBA,
+                     GL_UNSIGNED_BYTE, rgba.data());
+    } else {
+        const GLenum format = t.channels == 1 ? GL_RED : GL_RGB;
+        const GLint internal = t.channels == 1 ? GL_R8 : GL_RGB8;
+        glTexImage2D(GL_TEXTURE_2D, 0, internal, t.width, t.height, 0, format, GL_UNSIGNED_BYTE,
+                     t.pixels.data());
+    }
     glGenerateMipmap(GL_TEXTURE_2D);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -445,6 +455,8 @@ bool Renderer::Impl::use_cache(const FrameView& frame, int width, int height,
                                           GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &depth_bits);
     glGetIntegerv(GL_SAMPLES, &samples);
     if (depth_bits != 24) return false;
+    // OpenGL ES 3 (WebGL 2) blits into no multisampled framebuffer: the table is drawn afresh.
+    if (kPlatformGlsl == GlslTarget::es300 && samples > 1) return false;
     std::vector<float> key = {static_cast<float>(width), static_cast<float>(height),
                               static_cast<float>(samples), settings.fog ? 1.0f : 0.0f,
                               settings.exposure};

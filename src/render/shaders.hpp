@@ -9,12 +9,21 @@ namespace render {
 
 enum class GlslTarget { gl33, es300 };
 
+// The one place that picks the GLSL by platform: the web build (cmake/web.cmake) defines
+// COOLAABER_GLSL_ES, its WebGL 2 takes GLSL ES 3.00.
+#ifndef COOLAABER_GLSL_ES
+#define COOLAABER_GLSL_ES 0
+#endif
+/// The GLSL of this build's OpenGL: 3.30 core on the desktop, ES 3.00 in the browser.
+inline constexpr GlslTarget kPlatformGlsl =
+    COOLAABER_GLSL_ES ? GlslTarget::es300 : GlslTarget::gl33;
+
 /// The #version line (and, for ES, default precision) followed by the body.
-std::string shader_source(std::string_view body, GlslTarget target = GlslTarget::gl33);
+std::string shader_source(std::string_view body, GlslTarget target = kPlatformGlsl);
 
 /// Compiles and links a program; throws std::runtime_error with the info log on failure.
 unsigned build_program(std::string_view vertex_body, std::string_view fragment_body,
-                       GlslTarget target = GlslTarget::gl33);
+                       GlslTarget target = kPlatformGlsl);
 
 /// The table shader's materials, each its own program.
 enum class TableMaterial { cloth = 0, cushion = 1, wood = 2, cloth_bake = 3, rail_top = 4 };
