@@ -47,7 +47,7 @@ physics::Vec2 random_in_d(const SnookerSession& s, physics::SplitMix64& rng) {
 MatchDecision random_snooker(const SnookerSession& s, physics::SplitMix64& rng) {
     MatchDecision d;
     if (s.phase() == MatchPhase::choose) {
-        d.after_foul = s.choices()[rng.below(s.choices().size())];
+        d.after_foul = s.choices()[static_cast<std::size_t>(rng.below(s.choices().size()))];
         return d;
     }
     rules::SnookerState st = s.state();
@@ -58,7 +58,7 @@ MatchDecision random_snooker(const SnookerSession& s, physics::SplitMix64& rng) 
     std::vector<int> targets = balls_on(st);
     if (targets.empty())
         for (int id : st.on_table) targets.push_back(id);
-    const int target = targets[rng.below(targets.size())];
+    const int target = targets[static_cast<std::size_t>(rng.below(targets.size()))];
     if (st.colour_on) d.nominate = target;
     d.stroke = random_stroke_at(st.positions.at(sb::cue), st.positions.at(target), 10.0, rng);
     return d;
