@@ -167,7 +167,7 @@ class Controller {
 
     // ---- Snooker and three-cushion (docs/app.md, "Snooker and three-cushion"): the match
     // session holds the game; session() mirrors its table (the balls, the striker, a cue ball in
-    // hand) so that drawing, aiming and the aim guide work as in pool. Both seats are human.
+    // hand) so that drawing, aiming and the aim guide work as in pool.
     /// Seats whose kind has a player for the game (app/seats.hpp: snooker_computer,
     /// carom_computer) are played by it; the others are human.
     void start_snooker(game::SnookerSession match, ControllerOptions options);

@@ -8,8 +8,48 @@
 #include "app/seats.hpp"
 #include "app/shot_sharing.hpp"
 #include "game/json_field.hpp"
+#include "game/text_file.hpp"
 
 namespace app {
+
+namespace {
+
+// The saved game at `path`, of whichever game its "format" names (a pool session when it
+// names none it knows: that reader says what is wrong). Throws game::LoadError.
+void load_saved_game(GameSetup& g, const std::filesystem::path& path) {
+    const std::string text = game::read_regular_file(path);
+    const nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
+    const std::string format =
+        doc.is_object() && doc.contains("format") && doc["format"].is_string()
+            ? doc["format"].get<std::string>()
+            : std::string();
+    if (format == "coolaaber-snooker")
+        g.snooker = game::SnookerSession::from_json(text);
+    else if (format == "coolaaber-three-cushion")
+        g.carom = game::CaromSession::from_json(text);
+    else
+        g.session = game::Session::from_json(text);
+}
+
+// Writes `match` over `path` unless it is `finished` (then the old save goes).
+template <class Match>
+std::string save_match(const Match& match, bool finished, const std::filesystem::path& path) {
+    if (path.empty()) return {};
+    std::error_code ec;
+    try {
+        if (finished) {
+            std::filesystem::remove(path, ec);
+            return {};
+        }
+        std::filesystem::create_directories(path.parent_path(), ec);
+        match.save_file(path);
+    } catch (const std::exception& e) {
+        return e.what();
+    }
+    return {};
+}
+
+}  // namespace
 
 std::uint64_t fresh_seed() {
     return static_cast<std::uint64_t>(std::chrono::system_clock::now().time_since_epoch().count());
@@ -59,14 +99,16 @@ GameSetup set_up_game(const AppOptions& o) {
         return g;
     }
     if (o.load) {
-        g.session = game::Session::load_file(*o.load);  // a bad file: LoadError to the caller
+        load_saved_game(g, *o.load);  // a bad file: LoadError to the caller
+        if (!g.session) g.session.emplace(new_game_config(s, seed));
         return g;
     }
     std::error_code ec;
     if (!o.game && std::filesystem::exists(g.autosave_path, ec)) {
         try {
-            g.session = game::Session::load_file(g.autosave_path);
+            load_saved_game(g, g.autosave_path);
             if (g.notice.empty()) g.notice = "Resumed the game saved when you last exited.";
+            if (!g.session) g.session.emplace(new_game_config(s, seed));  // behind the match
             return g;
         } catch (const game::LoadError& e) {
             const std::filesystem::path aside = keep_aside(g.autosave_path);
@@ -98,6 +140,14 @@ std::string save_on_exit(const game::Session& session, const std::filesystem::pa
         return e.what();
     }
     return {};
+}
+
+std::string save_on_exit(const game::SnookerSession& match, const std::filesystem::path& path) {
+    return save_match(match, match.phase() == game::MatchPhase::match_over, path);
+}
+
+std::string save_on_exit(const game::CaromSession& match, const std::filesystem::path& path) {
+    return save_match(match, match.game_over(), path);
 }
 
 std::optional<GameSetup> set_up_or_report(const AppOptions& options) {

@@ -9,7 +9,9 @@
 #include "app/app.hpp"
 #include "app/controller.hpp"
 #include "app/settings.hpp"
+#include "game/carom_session.hpp"
 #include "game/session.hpp"
+#include "game/snooker_session.hpp"
 
 namespace app {
 
@@ -20,6 +22,10 @@ struct GameSetup {
     std::filesystem::path settings_path;
     std::filesystem::path autosave_path;
     std::optional<game::Session> session;
+    /// A snooker match or three-cushion game resumed from the autosave (played in `session`'s
+    /// place; `session` is then a new pool game behind it).
+    std::optional<game::SnookerSession> snooker;
+    std::optional<game::CaromSession> carom;
     ControllerOptions controller;
     /// A shared shot's stroke (--shot), played at once on `session`, set at its position.
     std::optional<physics::Stroke> shared_stroke;
@@ -44,5 +50,8 @@ std::uint64_t fresh_seed();
 /// Saves the game on exit (an unfinished one) or removes the old save (a finished one);
 /// returns an error message or empty. An empty `path` saves nothing.
 std::string save_on_exit(const game::Session& session, const std::filesystem::path& path);
+/// The same for a snooker match (finished: the match won) and a three-cushion game.
+std::string save_on_exit(const game::SnookerSession& match, const std::filesystem::path& path);
+std::string save_on_exit(const game::CaromSession& match, const std::filesystem::path& path);
 
 }  // namespace app

@@ -42,6 +42,10 @@ Table::Table(GameSetup s)
     saved = setup.settings;
     controller.set_power(setup.settings.power);
     if (setup.practice) start_practice(setup.settings.game);
+    if (setup.snooker) controller.start_snooker(std::move(*setup.snooker), setup.controller);
+    if (setup.carom) controller.start_carom(std::move(*setup.carom), setup.controller);
+    setup.snooker.reset();
+    setup.carom.reset();
     if (setup.shared_stroke) {
         controller.play_shared(*setup.shared_stroke);
         note_link(
@@ -216,10 +220,13 @@ void Table::persist_settings() {
 }
 
 std::string Table::save_game() const {
-    // Practice is not a game, and a snooker or three-cushion match is not saved (yet): the
-    // pool game saved before either stays as it was.
-    const bool pool_game = !controller.practicing() && !controller.snooker() && !controller.carom();
-    return pool_game ? save_on_exit(controller.session(), setup.autosave_path) : std::string();
+    // Practice is not a game: the game saved before it stays as it was.
+    if (controller.practicing()) return {};
+    if (const game::SnookerSession* m = controller.snooker())
+        return save_on_exit(*m, setup.autosave_path);
+    if (const game::CaromSession* m = controller.carom())
+        return save_on_exit(*m, setup.autosave_path);
+    return save_on_exit(controller.session(), setup.autosave_path);
 }
 
 void Table::save_and_close() {

@@ -142,3 +142,51 @@ TEST(GameSetup, ComputerSeatsAreCalledByWhatTheyAre) {
 }
 
 }  // namespace
+
+namespace {
+
+std::string read_all(const fs::path& p) {
+    std::ifstream in(p);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+}  // namespace
+
+TEST(GameSetup, ASnookerMatchOrAThreeCushionGameLeftUnfinishedIsResumed) {
+    const Folders f("resume-match");
+    game::SnookerConfig sc;
+    sc.names = {"Ann", "Bob"};
+    ASSERT_EQ(app::save_on_exit(game::SnookerSession(sc), f.data() / "saved-game.json"), "");
+    app::GameSetup g = app::set_up_game(options());
+    ASSERT_TRUE(g.snooker.has_value());
+    EXPECT_EQ(g.snooker->config().names[1], "Bob");
+    EXPECT_TRUE(g.session.has_value()) << "a pool session behind the match";
+    EXPECT_EQ(g.notice, "Resumed the game saved when you last exited.");
+
+    game::CaromConfig cc;
+    cc.options.target = 7;
+    ASSERT_EQ(app::save_on_exit(game::CaromSession(cc), f.data() / "saved-game.json"), "");
+    g = app::set_up_game(options());
+    ASSERT_TRUE(g.carom.has_value());
+    EXPECT_EQ(g.carom->config().options.target, 7);
+    EXPECT_FALSE(g.snooker.has_value());
+}
+
+TEST(GameSetup, ACorruptSnookerSaveIsKeptAsideNamingTheField) {
+    const Folders f("corrupt-match");
+    ASSERT_EQ(app::save_on_exit(game::SnookerSession(game::SnookerConfig{}),
+                                f.data() / "saved-game.json"),
+              "");
+    std::string text = read_all(f.data() / "saved-game.json");
+    const std::string best_of = "\"best_of\":1";
+    ASSERT_NE(text.find(best_of), std::string::npos) << text.substr(0, 300);
+    text.replace(text.find(best_of), best_of.size(), "\"best_of\":\"one\"");
+    std::ofstream(f.data() / "saved-game.json") << text;
+    const app::GameSetup g = app::set_up_game(options());
+    EXPECT_FALSE(g.snooker.has_value());
+    ASSERT_TRUE(g.session.has_value());
+    EXPECT_TRUE(g.notice_is_error);
+    EXPECT_NE(g.notice.find("best_of"), std::string::npos) << g.notice;
+    EXPECT_NE(g.notice.find("it was kept as"), std::string::npos) << g.notice;
+    EXPECT_FALSE(fs::exists(f.data() / "saved-game.json")) << "moved aside, not written over";
+}
