@@ -357,9 +357,10 @@ void Controller::update(double dt) {
 }
 
 void Controller::hint() {
-    if (!human_to_act() || session_.phase() != game::Phase::shoot || snooker_ || carom_) return;
-    hint_player_ = make_computer(
-        "ai:5", derive(options_.seed, 100 + static_cast<std::uint64_t>(hints_++)), options_.noise);
+    if (!human_to_act() || session_.phase() != game::Phase::shoot) return;
+    const std::uint64_t seed = derive(options_.seed, 100 + static_cast<std::uint64_t>(hints_++));
+    if (snooker_ || carom_) return match_hint(seed);
+    hint_player_ = make_computer("ai:5", seed, options_.noise);
     game::Player* player = hint_player_.get();
     const game::Session* s = &session_;
     hinting_ = true;

@@ -204,6 +204,9 @@ class Controller {
     /// when there is none.
     bool update_match_computer(double dt);
     void apply_match_computer(const game::MatchDecision& d);
+    /// Hint in a match: the level-5 player's decision, seeded `seed`, becomes the aim.
+    void match_hint(std::uint64_t seed);
+    void apply_match_hint(const game::MatchDecision& d);
     bool match_computer_to_act() const;
     void mirror_match();
     void begin_match_turn();
@@ -240,7 +243,7 @@ class Controller {
     std::future<game::Decision> thinking_;
     std::optional<game::Decision> computer_decision_;  ///< decided, shown before the strike
     std::unique_ptr<game::Player> hint_player_;        ///< the AI asked for a hint
-    bool hinting_ = false;                             ///< thinking_ is a hint for the human
+    bool hinting_ = false;  ///< thinking_ (in a match, match_thinking_) is a hint for the human
     int hints_ = 0;
     double computer_aim_left_ = 0.0;
     bool settled_ = true;  ///< the last shot's playback has reached its end and been taken in

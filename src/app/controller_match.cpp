@@ -139,9 +139,11 @@ bool Controller::update_match_computer(double dt) {
         if (match_thinking_.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
             return true;
         try {
-            apply_match_computer(match_thinking_.get());
+            const game::MatchDecision d = match_thinking_.get();
+            hinting_ ? apply_match_hint(d) : apply_match_computer(d);
         } catch (const std::exception& e) {
             refusal_ = std::string("the computer player failed: ") + e.what();
+            hinting_ = false;
         }
         return true;
     }
@@ -181,6 +183,39 @@ void Controller::apply_match_computer(const game::MatchDecision& d) {
     refresh_preview();
     match_decision_ = d;
     computer_aim_left_ = options_.computer_aim_seconds;
+}
+
+void Controller::match_hint(std::uint64_t seed) {
+    const bool shoot = snooker_ ? snooker_->phase() == game::MatchPhase::shoot
+                                : carom_->phase() == game::MatchPhase::shoot;
+    if (!shoot) return;
+    hinting_ = true;
+    if (snooker_) {
+        const auto decide = snooker_computer("ai:5", seed, options_.noise)->decide;
+        const game::SnookerSession* s = &*snooker_;
+        match_thinking_ = std::async(std::launch::async, [decide, s] { return decide(*s); });
+    } else {
+        const auto decide = carom_computer("ai:5", seed, options_.noise)->decide;
+        const game::CaromSession* s = &*carom_;
+        match_thinking_ = std::async(std::launch::async, [decide, s] { return decide(*s); });
+    }
+}
+
+void Controller::apply_match_hint(const game::MatchDecision& d) {
+    hinting_ = false;
+    if (snooker_ && d.cue_pos && snooker_->state().cue_ball == rules::CueBall::in_hand) {
+        try {
+            snooker_->place_cue_ball(*d.cue_pos);
+        } catch (const game::Refused&) {
+            // keep the cue ball where the player put it
+        }
+        mirror_match();
+    }
+    if (d.nominate) manual_nomination_ = d.nominate;
+    // The hint's stroke is this shot's aim only, as in pool.
+    aim_ = Aim{d.stroke.heading_deg, power_of_speed(d.stroke.speed), d.stroke.side, d.stroke.top,
+               d.stroke.elevation_deg};
+    refresh_preview();
 }
 
 render::GameLook Controller::look() const {

@@ -312,13 +312,9 @@ void play_buttons(const Controller& c, const Settings& settings, PanelState& st,
     if (auto g = aim_guide_combo(st, settings.aim_guide)) out.aim_guide = g;
     const bool choosing = c.snooker() && c.snooker()->phase() == game::MatchPhase::choose;
     if (c.human_to_act() && c.session().phase() == game::Phase::shoot && !choosing) {
-        if (c.snooker() || c.carom()) {  // no hint: the AI does not play these games yet
-            out.strike = full_button(st, "Strike");
-        } else {
-            const auto [strike, hint] = button_pair(st, "Strike", "Hint");
-            out.strike = strike;
-            out.hint = hint;
-        }
+        const auto [strike, hint] = button_pair(st, "Strike", "Hint");
+        out.strike = strike;
+        out.hint = hint;
     } else {
         ImGui::Dummy(ImVec2(0.0f, ImGui::GetFrameHeight()));
     }

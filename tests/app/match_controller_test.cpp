@@ -153,6 +153,30 @@ TEST(MatchController, ComputerSeatsScoreTheThreeCushionOpening) {
     EXPECT_EQ(c.last_shot_words().rfind("Point", 0), 0u) << c.last_shot_words();
 }
 
+// Hint in a match: the level-5 player's decision becomes the human's aim, and Strike plays it.
+TEST(MatchController, HintAimsForTheHumanInSnookerAndThreeCushion) {
+    ControllerOptions o = options();
+    o.playback_speed = 0.0;
+    for (const bool snooker : {true, false}) {
+        Controller c(app_test::new_session(), o);
+        if (snooker)
+            c.start_snooker(snooker_match(), o);
+        else
+            c.start_carom(carom_game(), o);
+        const Aim before = c.aim();
+        c.hint();
+        EXPECT_TRUE(c.computer_thinking());
+        EXPECT_FALSE(c.human_to_act()) << "not while the hint is thought of";
+        c.wait_for_computer();
+        c.update(0.05);
+        ASSERT_TRUE(c.human_to_act());
+        EXPECT_NE(c.aim().heading_deg, before.heading_deg) << "the hint's aim";
+        c.strike();
+        run_until_idle(c);
+        EXPECT_EQ(c.shot_serial(), 1) << "Strike played the hinted aim";
+    }
+}
+
 TEST(MatchController, ANewPoolGameAfterSnookerIsPoolAgain) {
     Controller c(app_test::new_session(), options());
     c.start_snooker(snooker_match(), options());
