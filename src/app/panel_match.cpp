@@ -36,7 +36,7 @@ bool begin_board(const std::array<std::string, 2>& names, std::optional<Player> 
     for (int i = 0; i < 2; ++i) {
         ImGui::TableSetColumnIndex(i + 1);
         const bool on = at_table && rules::index(*at_table) == static_cast<std::size_t>(i);
-        ImGui::Text("%s%s", on ? "> " : "", names[static_cast<std::size_t>(i)].c_str());
+        ImGui::TextWrapped("%s%s", on ? "> " : "", names[static_cast<std::size_t>(i)].c_str());
     }
     return true;
 }
