@@ -36,14 +36,8 @@ struct Outcome {
 };
 
 Outcome play(const CaromPosition& pos, const rules::CaromState& s, const physics::Stroke& stroke) {
-    std::vector<physics::BallState> balls;
-    for (const auto& [id, p] : s.positions) {
-        physics::BallState b;
-        b.id = id;
-        b.pos = p;
-        balls.push_back(b);
-    }
-    const physics::Shot shot = physics::simulate(pos.table, pos.params, balls, &stroke);
+    const physics::Shot shot =
+        physics::simulate(pos.table, pos.params, physics::balls_at_rest(s.positions), &stroke);
     const rules::CaromVerdict v = rules::judge_three_cushion(
         pos.options, physics::carom_spots(pos.table), pos.params.ball_radius, s, shot.events());
     Outcome o;

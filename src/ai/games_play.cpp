@@ -14,17 +14,6 @@ namespace {
 
 using clock_type = std::chrono::steady_clock;
 
-std::vector<physics::BallState> balls_of(const std::map<int, physics::Vec2>& positions) {
-    std::vector<physics::BallState> out;
-    for (const auto& [id, p] : positions) {
-        physics::BallState b;
-        b.id = id;
-        b.pos = p;
-        out.push_back(b);
-    }
-    return out;
-}
-
 double seconds_since(clock_type::time_point t) {
     return std::chrono::duration<double>(clock_type::now() - t).count();
 }
@@ -48,8 +37,8 @@ SnookerTurn snooker_turn(const SnookerFrameSetup& setup, const std::array<Seat, 
     t.record.seconds = seconds_since(start);
     t.record.before = with_plan(s, t.record.plan);
     t.record.executed = game::with_noise(t.record.plan.stroke, planned_scale(settings), rng);
-    const physics::Shot shot =
-        physics::simulate(table, params, balls_of(t.record.before.positions), &t.record.executed);
+    const physics::Shot shot = physics::simulate(
+        table, params, physics::balls_at_rest(t.record.before.positions), &t.record.executed);
     t.record.verdict =
         rules::judge_snooker(setup.options, pos.snooker, t.record.before, shot.events());
     t.next = t.record.verdict.state;
@@ -134,7 +123,7 @@ CaromGameReport play_three_cushion_game(const CaromGameSetup& setup,
         r.seconds = seconds_since(start);
         r.executed = game::with_noise(r.plan.stroke, planned_scale(settings), rng);
         const physics::Shot shot =
-            physics::simulate(table, params, balls_of(s.positions), &r.executed);
+            physics::simulate(table, params, physics::balls_at_rest(s.positions), &r.executed);
         r.verdict =
             rules::judge_three_cushion(setup.options, spots, params.ball_radius, s, shot.events());
         ++report.strokes;

@@ -9,6 +9,7 @@
 
 #include "ai/ai.hpp"
 #include "cli/commands.hpp"
+#include "cli/decide_input.hpp"
 #include "cli/json_in.hpp"
 #include "cli/json_out.hpp"
 #include "cli/physics_input.hpp"
@@ -51,20 +52,6 @@ std::optional<rules::Choice> read_choice(const JsonIn& in) {
         c.options.push_back(*o);
     }
     return c;
-}
-
-// The AI plans from every ball's position: the judge's state may be partial, this one may not.
-void require_positions(const JsonIn& state, const rules::GameState& s) {
-    const std::string path = state.path() + ".positions";
-    for (int id : s.on_table)
-        if (!s.positions.count(id))
-            throw BadInput(path, fmt::format("ball {} is on the table but has no position: give "
-                                             "every ball's position, e.g. \"{}\": [1.9, 0.6]",
-                                             id, id));
-    if (s.cue_ball == rules::CueBall::on_table && !s.positions.count(0))
-        throw BadInput(path,
-                       "the cue ball is on the table (cue_ball \"on_table\"): give its "
-                       "position as \"0\": [x, y]");
 }
 
 nlohmann::ordered_json call_json(const rules::Call& c) {

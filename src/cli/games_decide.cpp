@@ -7,6 +7,7 @@
 
 #include "ai/games.hpp"
 #include "cli/commands.hpp"
+#include "cli/decide_input.hpp"
 #include "cli/games_json.hpp"
 #include "cli/json_out.hpp"
 #include "cli/physics_input.hpp"
@@ -51,20 +52,6 @@ std::string_view after_foul_name(rules::AfterFoul c) {
                                                : "replace";
 }
 
-// Every object ball on the table needs a position, and the cue ball one when it is on the table.
-void require_snooker_positions(const JsonIn& state, const rules::SnookerState& s) {
-    const std::string path = state.path() + ".positions";
-    for (int id : s.on_table)
-        if (!s.positions.count(id))
-            throw BadInput(path, fmt::format("ball {} is on the table but has no position: give "
-                                             "every ball's position, e.g. \"{}\": [1.9, 0.6]",
-                                             id, id));
-    if (s.cue_ball == rules::CueBall::on_table && !s.positions.count(0))
-        throw BadInput(path,
-                       "the cue ball is on the table (cue_ball \"on_table\"): give its "
-                       "position as \"0\": [x, y]");
-}
-
 // The choice after a foul: "state" is the verdict's (the incoming player to play), "after_foul"
 // the state the foul was played from, whether a miss was called and the offender's misses.
 ordered_json after_foul_document(const JsonIn& in, const ai::SnookerPosition& pos,
@@ -104,7 +91,7 @@ ordered_json snooker_decide_document(const JsonIn& in) {
     const physics::Table table = physics::build_table(spec);
     const JsonIn state = in.at("state");
     rules::SnookerState s = read_snooker_state(state, table, params);
-    require_snooker_positions(state, s);
+    require_positions(state, s);
     if (s.cue_ball == rules::CueBall::in_hand) s.positions.erase(0);  // the AI places it
     const ai::SnookerPosition pos = ai::snooker_position(table, params, options, s);
     const ai::PlanSettings settings = read_settings(in);

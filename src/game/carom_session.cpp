@@ -70,14 +70,7 @@ std::optional<rules::Player> CaromSession::to_act() const {
 }
 
 std::vector<physics::BallState> CaromSession::balls() const {
-    std::vector<physics::BallState> out;
-    for (const auto& [id, p] : state_.positions) {
-        physics::BallState b;
-        b.id = id;
-        b.pos = p;
-        out.push_back(b);
-    }
-    return out;
+    return physics::balls_at_rest(state_.positions);
 }
 
 double CaromSession::average(rules::Player p) const {

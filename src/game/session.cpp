@@ -131,14 +131,7 @@ rules::BallInHand Session::ball_in_hand() const {
 }
 
 std::vector<physics::BallState> balls_at_rest(const rules::GameState& state) {
-    std::vector<physics::BallState> out;
-    for (const auto& [id, p] : state.positions) {
-        physics::BallState b;
-        b.id = id;
-        b.pos = p;
-        out.push_back(b);
-    }
-    return out;
+    return physics::balls_at_rest(state.positions);
 }
 
 std::vector<physics::BallState> Session::balls() const {

@@ -27,17 +27,6 @@ physics::Table checked_table(const SnookerConfig& c) {
     return physics::build_table(c.table);
 }
 
-std::vector<physics::BallState> at_rest(const std::map<int, physics::Vec2>& positions) {
-    std::vector<physics::BallState> out;
-    for (const auto& [id, p] : positions) {
-        physics::BallState b;
-        b.id = id;
-        b.pos = p;
-        out.push_back(b);
-    }
-    return out;
-}
-
 }  // namespace
 
 std::string snooker_ball_name(int id) {
@@ -110,7 +99,7 @@ std::optional<rules::Player> SnookerSession::to_act() const {
 }
 
 std::vector<physics::BallState> SnookerSession::balls() const {
-    return at_rest(state_.positions);
+    return physics::balls_at_rest(state_.positions);
 }
 
 bool SnookerSession::may_nominate() const {
@@ -168,7 +157,8 @@ const rules::SnookerVerdict& SnookerSession::play(const physics::Stroke& stroke)
     if (s.free_ball && !s.nominated) s.free_ball = false;  // the free ball declined
     physics::Stroke k = stroke;
     k.ball = sb::cue;
-    physics::Shot shot = physics::simulate(table_, config_.params, at_rest(s.positions), &k);
+    physics::Shot shot =
+        physics::simulate(table_, config_.params, physics::balls_at_rest(s.positions), &k);
     rules::SnookerVerdict v = rules::judge_snooker(config_.options, marks_, s, shot.events());
     before_ = s;
     state_ = v.state;

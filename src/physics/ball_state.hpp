@@ -2,8 +2,10 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string_view>
+#include <vector>
 
 #include "physics/vec.hpp"
 
@@ -26,5 +28,18 @@ struct BallState {
     Motion motion = Motion::stationary;
     int pocket = -1;  ///< pocket index (see table.hpp) when motion is pocketed
 };
+
+/// Balls at rest at `positions` (ball id → centre), in id order.
+inline std::vector<BallState> balls_at_rest(const std::map<int, Vec2>& positions) {
+    std::vector<BallState> out;
+    out.reserve(positions.size());
+    for (const auto& [id, p] : positions) {
+        BallState b;
+        b.id = id;
+        b.pos = p;
+        out.push_back(b);
+    }
+    return out;
+}
 
 }  // namespace physics
