@@ -267,14 +267,18 @@ void Controller::play(const physics::Stroke& stroke) {
         computer_decision_.reset();  // never retried frame after frame
         return;
     }
+    dry_shots_ = record->summary.down.empty() ? dry_shots_ + 1 : 0;
+    computer_decision_.reset();
+    start_playback(*session_.last_shot(), std::move(info_before));
+}
+
+void Controller::start_playback(const physics::Shot& shot, std::vector<std::string> info_before) {
     refusal_.clear();
     info_at_strike_ = std::move(info_before);
     words_at_strike_ = last_words_;
     replaying_ = false;
-    dry_shots_ = record->summary.down.empty() ? dry_shots_ + 1 : 0;
     preview_.reset();
-    computer_decision_.reset();
-    playback_.start(*session_.last_shot(), stroke_lead);
+    playback_.start(shot, stroke_lead);
     orientations_.begin_shot();
     at_strike_ = orientations_;
     ++shot_serial_;

@@ -199,6 +199,9 @@ class Controller {
 
   private:
     void play_match(const physics::Stroke& stroke);
+    /// After any game's stroke was played: its playback starts, and what the panel said before
+    /// it (`info_before`, the last shot's words) is kept for Replay.
+    void start_playback(const physics::Shot& shot, std::vector<std::string> info_before);
     void finish_match_shot();
     /// A computer seat's turn in a match: thinking, then its aim shown, then the stroke; false
     /// when there is none.

@@ -384,18 +384,8 @@ void Controller::play_match(const physics::Stroke& stroke) {
         refusal_ = e.what();
         return;
     }
-    refusal_.clear();
     match_stroke_ = StrokeShown{cue_at, stroke};
-    info_at_strike_ = std::move(info_before);
-    words_at_strike_ = last_words_;
-    replaying_ = false;
-    preview_.reset();
-    playback_.start(*shot, stroke_lead);
-    orientations_.begin_shot();
-    at_strike_ = orientations_;
-    ++shot_serial_;
-    settled_ = false;
-    if (options_.playback_speed <= 0.0) skip();
+    start_playback(*shot, std::move(info_before));
 }
 
 void Controller::finish_match_shot() {

@@ -59,17 +59,7 @@ void Controller::play_practice(const physics::Stroke& stroke) {
         refusal_ = e.what();
         return;
     }
-    refusal_.clear();
-    info_at_strike_ = info();
-    words_at_strike_ = last_words_;
-    replaying_ = false;
-    preview_.reset();
-    playback_.start(*shot, stroke_lead);
-    orientations_.begin_shot();
-    at_strike_ = orientations_;
-    ++shot_serial_;
-    settled_ = false;
-    if (options_.playback_speed <= 0.0) skip();
+    start_playback(*shot, info());
 }
 
 void Controller::finish_practice_shot() {
