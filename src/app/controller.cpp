@@ -70,6 +70,7 @@ void Controller::replace(game::Session session, ControllerOptions options) {
     practice_.reset();
     snooker_.reset();
     carom_.reset();
+    last_match_shot_.reset();
     session_ = std::move(session);
     options_ = std::move(options);
     for (std::size_t i = 0; i < 2; ++i)
@@ -127,6 +128,7 @@ void Controller::play_shared(const physics::Stroke& stroke) {
     aim_.side = stroke.side;
     aim_.top = stroke.top;
     aim_.elevation_deg = stroke.elevation_deg;
+    if (snooker_ || carom_) return play_match(stroke, false);
     play(stroke);
 }
 

@@ -23,6 +23,7 @@
 #include "game/player.hpp"
 #include "game/practice.hpp"
 #include "game/session.hpp"
+#include "game/shot_link.hpp"
 #include "physics/rack.hpp"
 #include "render/renderer.hpp"
 
@@ -196,9 +197,14 @@ class Controller {
         physics::Stroke stroke;
     };
     const std::optional<StrokeShown>& match_stroke() const { return match_stroke_; }
+    /// The match's last stroke as a shot to share (the match just before it, and the stroke);
+    /// empty in pool, before the first stroke and in a new frame or game.
+    const std::optional<game::AnyShot>& last_match_shot() const { return last_match_shot_; }
 
   private:
-    void play_match(const physics::Stroke& stroke);
+    /// `nominate_now`: the nomination is taken from the aim (or the player's own) first; a
+    /// shared shot's session already holds its nomination.
+    void play_match(const physics::Stroke& stroke, bool nominate_now = true);
     /// After any game's stroke was played: its playback starts, and what the panel said before
     /// it (`info_before`, the last shot's words) is kept for Replay.
     void start_playback(const physics::Shot& shot, std::vector<std::string> info_before);
@@ -267,6 +273,7 @@ class Controller {
     std::future<game::MatchDecision> match_thinking_;
     std::optional<game::MatchDecision> match_decision_;  ///< decided, shown before the strike
     std::optional<StrokeShown> match_stroke_;
+    std::optional<game::AnyShot> last_match_shot_;
 };
 
 }  // namespace app

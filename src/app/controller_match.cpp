@@ -358,10 +358,11 @@ void Controller::next_frame() {
     orientations_.reset();
     last_words_.clear();
     refusal_.clear();
+    last_match_shot_.reset();
     begin_turn();
 }
 
-void Controller::play_match(const physics::Stroke& stroke) {
+void Controller::play_match(const physics::Stroke& stroke, bool nominate_now) {
     std::vector<std::string> info_before = match_info();
     const physics::Vec2 cue_at = session_.state().positions.at(cue_ball_id());
     const physics::Shot* shot = nullptr;
@@ -373,11 +374,15 @@ void Controller::play_match(const physics::Stroke& stroke) {
     }
     try {
         if (snooker_) {
-            if (snooker_->may_nominate()) snooker_->nominate(nomination());
+            if (nominate_now && snooker_->may_nominate()) snooker_->nominate(nomination());
+            game::SnookerSession before = *snooker_;
             snooker_->play(stroke);
+            last_match_shot_ = game::SharedSnookerShot{std::move(before), stroke};
             shot = snooker_->last_shot();
         } else {
+            game::CaromSession before = *carom_;
             carom_->play(stroke);
+            last_match_shot_ = game::SharedCaromShot{std::move(before), stroke};
             shot = carom_->last_shot();
         }
     } catch (const game::Refused& e) {

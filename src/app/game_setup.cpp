@@ -93,9 +93,8 @@ GameSetup set_up_game(const AppOptions& o) {
     g.controller.playback_speed = o.playback_speed;
 
     if (o.shot) {
-        const game::SharedShot shot = game::read_shot_link(*o.shot);  // LoadError to the caller
-        g.session = session_of(shot, seat_names(s.names, s.players), seed);
-        g.shared_stroke = shot.stroke;
+        g.shared_shot = game::read_any_shot_link(*o.shot);  // LoadError to the caller
+        g.session.emplace(new_game_config(s, seed));        // replaced by the shot's
         return g;
     }
     if (o.load) {

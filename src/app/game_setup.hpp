@@ -11,6 +11,7 @@
 #include "app/settings.hpp"
 #include "game/carom_session.hpp"
 #include "game/session.hpp"
+#include "game/shot_link.hpp"
 #include "game/snooker_session.hpp"
 
 namespace app {
@@ -27,8 +28,9 @@ struct GameSetup {
     std::optional<game::SnookerSession> snooker;
     std::optional<game::CaromSession> carom;
     ControllerOptions controller;
-    /// A shared shot's stroke (--shot), played at once on `session`, set at its position.
-    std::optional<physics::Stroke> shared_stroke;
+    /// A shared shot (--shot), opened in `session`'s place and played at once
+    /// (shot_sharing.hpp, open_shot).
+    std::optional<game::AnyShot> shared_shot;
     bool practice = false;                ///< --practice: start practising at the game's rack
     std::filesystem::path position_path;  ///< where Save position writes (practice)
     std::string notice;  ///< shown in the panel (a settings or saved game kept aside, a resume)

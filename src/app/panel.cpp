@@ -329,9 +329,7 @@ void play_buttons(const Controller& c, const Settings& settings, PanelState& st,
         ImGui::Dummy(ImVec2(half, ImGui::GetFrameHeight()));
     }
     ImGui::SameLine();
-    ImGui::BeginDisabled(c.snooker() || c.carom());  // shot links carry pool positions
     if (ImGui::Button("Copy shot link", ImVec2(half, 0.0f))) out.copy_link = true;
-    ImGui::EndDisabled();
     remember(st, "Copy shot link");
     const auto [new_game, controls] = button_pair(st, "New Game...", "Controls");
     if (new_game) open_new_game(st, settings);

@@ -46,8 +46,10 @@ Table::Table(GameSetup s)
     if (setup.carom) controller.start_carom(std::move(*setup.carom), setup.controller);
     setup.snooker.reset();
     setup.carom.reset();
-    if (setup.shared_stroke) {
-        controller.play_shared(*setup.shared_stroke);
+    if (setup.shared_shot) {
+        open_shot(controller, std::move(*setup.shared_shot),
+                  seat_names(setup.settings.names, setup.controller.players), setup.controller);
+        setup.shared_shot.reset();
         note_link(
             "Opened a shot link: the shot plays as it was shared; Replay (P) shows it "
             "again, or play on from where it leaves the balls.",
@@ -66,19 +68,18 @@ void Table::note_link(std::string text, bool is_error) {
 }
 
 void Table::copy_link(platform::Window& window) {
-    const ShotToShare s =
-        shot_to_share(controller.session(), controller.stroke_of(controller.aim()));
+    const ShotToShare s = shot_to_share(controller);
     if (!s.shot) return note_link(s.why_not, true);
     if (const std::optional<std::string> why = window.copy_link(game::shot_link(*s.shot)))
         return note_link("The clipboard could not be written: " + *why, true);
-    note_link(copied_notice(*s.shot, !controller.session().history().empty()), false);
+    note_link(copied_notice(s), false);
 }
 
 void Table::open_link(const std::string& text, LinkFrom from) {
     const bool pasted = from == LinkFrom::paste;
-    game::SharedShot shot;
+    std::optional<game::AnyShot> shot;
     try {
-        shot = game::read_shot_link(text);
+        shot = game::read_any_shot_link(text);
     } catch (const game::LoadError& e) {
         return note_link(
             std::string(pasted ? "The pasted text is not" : "The page's address does not hold") +
@@ -88,9 +89,7 @@ void Table::open_link(const std::string& text, LinkFrom from) {
     ControllerOptions opts = setup.controller;
     opts.players = setup.settings.players;
     opts.seed = fresh_seed();
-    controller.replace(session_of(shot, seat_names(setup.settings.names, opts.players), opts.seed),
-                       opts);
-    controller.play_shared(shot.stroke);
+    open_shot(controller, std::move(*shot), seat_names(setup.settings.names, opts.players), opts);
     note_link(std::string(pasted ? "Opened the pasted shot link"
                                  : "Opened the shot link in the page's address") +
                   ": Replay (P) shows it again, or play on.",

@@ -95,7 +95,7 @@ nlohmann::ordered_json shot_json(const SharedShot& s) {
             {"state", to_json(s.state)},   {"stroke", to_json(s.stroke)}};
 }
 
-SharedShot read_shot(const Field& f) {
+SharedShot read_pool_shot(const Field& f) {
     f.require_fields({"game", "options", "table", "params", "state", "stroke"});
     SharedShot s;
     s.game = f.at("game").name_of<rules::Game>();
@@ -108,18 +108,63 @@ SharedShot read_shot(const Field& f) {
     return s;
 }
 
+nlohmann::ordered_json match_json(std::string_view game, const std::string& save,
+                                  const physics::Stroke& stroke) {
+    return {{"game", game},
+            {"session", nlohmann::ordered_json::parse(save)},
+            {"stroke", to_json(stroke)}};
+}
+
+/// A match session from its save format inside a link; its errors' paths are put under
+/// `f`'s ("snooker.state.…" becomes "link.shot.session.state.…").
+template <class MatchSession>
+MatchSession read_session(const Field& f, std::string_view root) {
+    try {
+        return MatchSession::from_json(f.raw().dump());
+    } catch (const LoadError& e) {
+        std::string path = e.path();
+        if (path.starts_with(root)) path = f.path() + path.substr(root.size());
+        throw LoadError(path, e.detail());
+    }
+}
+
+AnyShot read_shot(const Field& f) {
+    const std::string game = f.at("game").one_of({"8ball", "9ball", "snooker", "three_cushion"});
+    if (game != "snooker" && game != "three_cushion") return read_pool_shot(f);
+    f.require_fields({"game", "session", "stroke"});
+    const physics::Stroke stroke = read_stroke(f.at("stroke"));
+    if (game == "snooker")
+        return SharedSnookerShot{read_session<SnookerSession>(f.at("session"), "snooker"), stroke};
+    return SharedCaromShot{read_session<CaromSession>(f.at("session"), "carom"), stroke};
+}
+
 }  // namespace
 
 std::vector<physics::BallState> SharedShot::balls() const {
     return balls_at_rest(state);
 }
 
-std::string shot_link(const SharedShot& shot) {
-    const std::string json = shot_json(shot).dump();
+std::string link_of_payload(std::string_view json) {
     return fmt::format("{}{}.{:08x}.{}", kPrefix, kVersion, checksum(json), base64url(json));
 }
 
-SharedShot read_shot_link(std::string_view text) {
+std::string shot_link(const SharedShot& shot) {
+    return link_of_payload(shot_json(shot).dump());
+}
+
+std::string shot_link(const SharedSnookerShot& shot) {
+    return link_of_payload(match_json("snooker", shot.before.to_json(), shot.stroke).dump());
+}
+
+std::string shot_link(const SharedCaromShot& shot) {
+    return link_of_payload(match_json("three_cushion", shot.before.to_json(), shot.stroke).dump());
+}
+
+std::string shot_link(const AnyShot& shot) {
+    return std::visit([](const auto& s) { return shot_link(s); }, shot);
+}
+
+AnyShot read_any_shot_link(std::string_view text) {
     const std::string_view body = link_body(text);
     const std::size_t dot1 = body.find('.'), dot2 = body.find('.', dot1 + 1);
     if (dot1 == std::string_view::npos || dot2 == std::string_view::npos)
@@ -135,6 +180,13 @@ SharedShot read_shot_link(std::string_view text) {
                         "or changed): copy the whole link again");
     const nlohmann::json doc = parse_document(json, "link.shot");
     return read_shot(Field(doc, "link.shot"));
+}
+
+SharedShot read_shot_link(std::string_view text) {
+    AnyShot shot = read_any_shot_link(text);
+    if (SharedShot* pool = std::get_if<SharedShot>(&shot)) return std::move(*pool);
+    throw LoadError("link.shot.game",
+                    "a snooker or three-cushion shot: open it in the game, which plays all four");
 }
 
 }  // namespace game

@@ -600,7 +600,8 @@ def snooker(exe, work):
 
 def three_cushion(exe, work):
     """Three-cushion from New Game: the white opens at the red; a stroke's words say what it
-    did (point, or no point and why) and the scoreboard's innings follow; both views drawn."""
+    did (point, or no point and why) and the scoreboard's innings follow; Copy shot link and
+    Ctrl+V play the same stroke again to the same game; both views drawn."""
     g = Game(exe, work, "--view", "overhead", "--seed", "2")
     try:
         s = start_from_new_game(g, "Three-cushion")
@@ -621,6 +622,14 @@ def three_cushion(exe, work):
             check(m["scores"] == [0, 0] and m["innings"] == [1, 1] and m["cue_ball"] == 1,
                   f"the inning passes to Player 2 and the yellow: {m}")
             check(s["info"][0] == "Player 2 to play the yellow — inning 1", f"info: {s['info']}")
+        after = (s["positions"], m["scores"], m["innings"])
+        g.click_widget("Copy shot link")
+        g.wait(lambda s: "Copied the link of the last shot (3 balls)" in s["link_note"], 10, "the copy")
+        key(g, "ctrl+v")
+        g.wait(lambda s: "Opened the pasted shot link" in s["link_note"], 20, "the paste")
+        s = g.wait(lambda s: not s["moving"] and not s["busy"], 60, "the pasted shot")
+        check((s["positions"], s["match"]["scores"], s["match"]["innings"]) == after,
+              f"the pasted link plays the same stroke from the same game: {s['match']}")
         overhead = g.screenshot("carom-2-overhead.png")
         g.click_widget("Change View")
         g.wait(lambda s: s["view"] == "cueball", 10, "the cue-ball view")
