@@ -29,7 +29,8 @@ struct GameSetup {
     ControllerOptions controller;
     /// A shared shot's stroke (--shot), played at once on `session`, set at its position.
     std::optional<physics::Stroke> shared_stroke;
-    bool practice = false;                ///< --practice: start practising at the game's rack
+    /// --practice: start practising at this game's table and balls
+    std::optional<physics::RackType> practice;
     std::filesystem::path position_path;  ///< where Save position writes (practice)
     std::string notice;  ///< shown in the panel (a settings or saved game kept aside, a resume)
     bool notice_is_error = false;  ///< a file was bad (else: news, e.g. the game was resumed)
