@@ -224,8 +224,9 @@ class Controller {
     void play_practice(const physics::Stroke& stroke);
     void finish_practice_shot();
     void mirror_practice();
-    /// The balls the aim turns to at a practice turn on the snooker and three-cushion tables
-    /// (on the pool tables the rules' legal targets are).
+    /// The balls the aim turns to at a practice turn on the snooker and three-cushion tables:
+    /// the reds while there are any, the red (as the opening stroke); else every ball (on the
+    /// pool tables the rules' legal targets are).
     std::vector<int> practice_targets() const;
     void begin_turn();
     void refresh_preview();

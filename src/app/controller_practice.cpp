@@ -83,7 +83,10 @@ std::vector<int> Controller::practice_targets() const {
         all.push_back(id);
         if (physics::is_red(id)) reds.push_back(id);
     }
-    // From the D, the reds rather than a baulk colour.
+    // From the D, the reds rather than a baulk colour; three-cushion: the red, as the opening.
+    if (practice_->game() == physics::RackType::three_cushion &&
+        practice_->balls().count(physics::carom_ball::red))
+        return {physics::carom_ball::red};
     return practice_->game() == physics::RackType::snooker && !reds.empty() ? reds : all;
 }
 

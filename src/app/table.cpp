@@ -199,6 +199,7 @@ void Table::start_new_game(const NewGame& choice) {
     ControllerOptions opts = setup.controller;
     opts.players = s.players;
     opts.seed = fresh_seed();
+    panel.link_note.clear();  // a saved or loaded position's note belongs to the last game
     try {
         if (choice.practice) return start_practice(practice_game(choice));
         if (choice.table != TableGame::pool) return start_match(controller, choice, opts);

@@ -160,6 +160,8 @@ TEST(PracticeTablesController, ThreeCushionPlaysTheWhiteAndTriesAgain) {
     c.start_practice(game::Practice::on_own_table(physics::RackType::three_cushion, 8),
                      app_test::options());
     EXPECT_EQ(c.look(), render::GameLook::carom);
+    ASSERT_NE(c.preview(), nullptr);
+    EXPECT_EQ(c.preview()->first_ball, physics::carom_ball::red) << "aimed as the opening";
     const std::map<int, physics::Vec2> start = c.session().state().positions;
     EXPECT_EQ(start.size(), 3u);
     EXPECT_FALSE(c.move_ball(1, start.at(2)));
