@@ -364,7 +364,11 @@ void Controller::update(double dt) {
 }
 
 void Controller::hint() {
-    if (!human_to_act() || session_.phase() != game::Phase::shoot || !hint_available()) return;
+    if (!human_to_act() || session_.phase() != game::Phase::shoot) return;
+    if (!hint_available()) {
+        refusal_ = "No hint here: in practice Hint knows the pool tables only.";
+        return;
+    }
     const std::uint64_t seed = derive(options_.seed, 100 + static_cast<std::uint64_t>(hints_++));
     if (snooker_ || carom_) return match_hint(seed);
     hint_player_ = make_computer("ai:5", seed, options_.noise);

@@ -51,6 +51,7 @@ std::optional<std::pair<double, double>> spin_picker(double side, double top, bo
     return std::nullopt;
 }
 
+// The game whose table and balls practice is at, for the title line.
 const char* practice_title(physics::RackType game) {
     switch (game) {
         case physics::RackType::eight_ball:
@@ -322,12 +323,12 @@ void play_buttons(const Controller& c, const Settings& settings, PanelState& st,
     ImGui::Separator();
     if (auto g = aim_guide_combo(st, settings.aim_guide)) out.aim_guide = g;
     const bool choosing = c.snooker() && c.snooker()->phase() == game::MatchPhase::choose;
-    if (c.human_to_act() && c.session().phase() == game::Phase::shoot && !choosing &&
-        c.hint_available()) {
+    const bool shoot = c.human_to_act() && c.session().phase() == game::Phase::shoot && !choosing;
+    if (shoot && c.hint_available()) {
         const auto [strike, hint] = button_pair(st, "Strike", "Hint");
         out.strike = strike;
         out.hint = hint;
-    } else if (c.human_to_act() && c.session().phase() == game::Phase::shoot && !choosing) {
+    } else if (shoot) {
         out.strike = full_button(st, "Strike");  // no Hint where no player knows the table
     } else {
         ImGui::Dummy(ImVec2(0.0f, ImGui::GetFrameHeight()));

@@ -147,6 +147,8 @@ TEST(PracticeTablesController, HintIsOnlyWhereAPlayerKnowsTheTable) {
         const Aim before = c.aim();
         c.hint();
         EXPECT_FALSE(c.computer_thinking()) << "nothing is asked";
+        EXPECT_EQ(c.refusal(), "No hint here: in practice Hint knows the pool tables only.")
+            << "the H key says why";
         EXPECT_EQ(c.aim().heading_deg, before.heading_deg);
     }
     Controller pool(app_test::new_session(), app_test::options());
