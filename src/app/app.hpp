@@ -9,6 +9,7 @@
 #include <string>
 
 #include "app/settings.hpp"
+#include "physics/rack.hpp"
 #include "rules/game_state.hpp"
 
 namespace app {
@@ -16,10 +17,11 @@ namespace app {
 struct AppOptions {
     std::optional<int> width, height;  ///< --size WxH (unit: px)
     bool fullscreen = false;
-    std::optional<rules::Game> game;            ///< --game: a new game of this kind
+    /// --game: a new game of this kind (8-ball, 9-ball, snooker, three-cushion)
+    std::optional<physics::RackType> game;
     std::optional<std::filesystem::path> load;  ///< --load FILE: a saved game
     std::optional<std::string> shot;            ///< --shot LINK: a shared shot, played at once
-    bool practice = false;  ///< --practice: one player at the game's rack, no rules
+    bool practice = false;  ///< --practice: one player at the game's table and balls, no rules
     std::optional<ViewMode> view;
     std::optional<std::filesystem::path> screenshot;  ///< render the first frame to a PNG, exit
     // Test hooks and extras

@@ -215,6 +215,9 @@ void Controller::prepare_human_ball_in_hand() {
 void Controller::aim_at_target() {
     const auto cue = session_.state().positions.find(0);
     if (cue == session_.state().positions.end()) return;
+    if (practice_ && practice_->game() != physics::RackType::eight_ball &&
+        practice_->game() != physics::RackType::nine_ball)
+        return aim_at_open_ball(practice_targets());
     std::optional<physics::Vec2> best;
     double best_d = 1e9;
     for (int id : legal_targets(session_)) {
@@ -364,6 +367,10 @@ void Controller::update(double dt) {
 
 void Controller::hint() {
     if (!human_to_act() || session_.phase() != game::Phase::shoot) return;
+    if (!hint_available()) {
+        refusal_ = "No hint here: in practice Hint knows the pool tables only.";
+        return;
+    }
     const std::uint64_t seed = derive(options_.seed, 100 + static_cast<std::uint64_t>(hints_++));
     if (snooker_ || carom_) return match_hint(seed);
     hint_player_ = make_computer("ai:5", seed, options_.noise);
@@ -594,10 +601,10 @@ void Controller::restart() {
     if (snooker_) return start_snooker(game::SnookerSession(snooker_->config()), options_);
     if (carom_) return start_carom(game::CaromSession(carom_->config()), options_);
     if (practice_) {  // a new rack to practise on
-        const game::Session& s = session_;
-        start_practice(game::Practice(s.config().game, s.config().table, s.config().params,
-                                      s.config().seed + 1),
-                       options_);
+        const game::Practice& p = *practice_;
+        start_practice(
+            game::Practice(p.game(), p.table_spec(), p.params(), session_.config().seed + 1),
+            options_);
         return;
     }
     stop_thinking();

@@ -165,6 +165,9 @@ class Controller {
     bool move_ball(int id, physics::Vec2 pos);
     /// Practice: the position before the last shot again.
     void try_again();
+    /// Whether Hint has a player for the table: everywhere but practice on the snooker and
+    /// three-cushion tables.
+    bool hint_available() const;
 
     // ---- Snooker and three-cushion (docs/app.md, "Snooker and three-cushion"): the match
     // session holds the game; session() mirrors its table (the balls, the striker, a cue ball in
@@ -219,11 +222,18 @@ class Controller {
     bool match_computer_to_act() const;
     void mirror_match();
     void begin_match_turn();
+    /// Aims at the nearest of `targets` that the cue ball can hit with a clear path (full or
+    /// thin), else the nearest.
+    void aim_at_open_ball(const std::vector<int>& targets);
     std::vector<std::string> match_info() const;
     physics::Vec2 default_d_spot() const;
     void play_practice(const physics::Stroke& stroke);
     void finish_practice_shot();
     void mirror_practice();
+    /// The balls the aim turns to at a practice turn on the snooker and three-cushion tables:
+    /// the reds while there are any, the red (as the opening stroke); else every ball (on the
+    /// pool tables the rules' legal targets are).
+    std::vector<int> practice_targets() const;
     void begin_turn();
     void refresh_preview();
     void play(const physics::Stroke& stroke);

@@ -219,6 +219,10 @@ void Controller::apply_match_hint(const game::MatchDecision& d) {
 }
 
 render::GameLook Controller::look() const {
+    if (practice_)
+        return practice_->game() == physics::RackType::snooker         ? render::GameLook::snooker
+               : practice_->game() == physics::RackType::three_cushion ? render::GameLook::carom
+                                                                       : render::GameLook::pool;
     return snooker_ ? render::GameLook::snooker
            : carom_ ? render::GameLook::carom
                     : render::GameLook::pool;
@@ -284,11 +288,15 @@ void Controller::begin_match_turn() {
     }
     if (!shoot) return;
     aim_ = human_aim_;
+    aim_at_open_ball(match_targets(snooker(), carom()));
+}
+
+void Controller::aim_at_open_ball(const std::vector<int>& targets) {
     const auto& pos = session_.state().positions;
     const physics::Vec2 cue = pos.at(cue_ball_id());
     const double R = session_.config().params.ball_radius;
     double best = 1e9;
-    for (int id : match_targets(snooker(), carom())) {
+    for (int id : targets) {
         // The nearest ball that can be hit with a clear path, full or thin, before any other.
         const std::optional<physics::Vec2> at = open_contact(pos, cue_ball_id(), id, R);
         const physics::Vec2 d = at.value_or(pos.at(id)) - cue;
@@ -298,7 +306,6 @@ void Controller::begin_match_turn() {
             aim_.heading_deg = std::atan2(d.y, d.x) * 180.0 / std::numbers::pi;
         }
     }
-    refresh_preview();
 }
 
 std::optional<int> Controller::nomination() const {

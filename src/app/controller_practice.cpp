@@ -1,9 +1,10 @@
-// The controller in practice mode (game/practice.hpp): the practice holds the position and
-// plays the shots; the session mirrors the position (A always to shoot, the cue ball on the
-// table) so that drawing, aiming and the aim guide work as in a game.
+// The controller in practice mode (game/practice.hpp), on any game's table: the practice holds
+// the position and plays the shots; the session mirrors the position (A always to shoot, the
+// cue ball on the table) so that drawing, aiming and the aim guide work as in a game.
 #include <fmt/format.h>
 
 #include "app/controller.hpp"
+#include "physics/markings.hpp"
 
 namespace app {
 
@@ -11,7 +12,7 @@ namespace {
 
 game::Session mirror_of(const game::Practice& p, const game::Config& was) {
     game::Config c;
-    c.game = p.game();
+    c.game = p.pool_game();
     c.table = p.table_spec();
     c.params = p.params();
     c.names = {"You", "You"};
@@ -26,12 +27,12 @@ game::Session mirror_of(const game::Practice& p, const game::Config& was) {
     return game::Session::at_position(std::move(c), std::move(s));
 }
 
-std::string practice_words(const physics::Shot& shot) {
+std::string practice_words(const game::Practice& p, const physics::Shot& shot) {
     std::vector<std::string> down;
     for (const physics::BallState& b : shot.final_states())
         if (b.motion == physics::Motion::pocketed)
-            down.push_back(b.id == 0 ? "the cue ball (back on the head spot)"
-                                     : fmt::format("the {}", b.id));
+            down.push_back(b.id == 0 ? fmt::format("the cue ball (back {})", p.return_words())
+                                     : "the " + p.ball_name(b.id));
     if (down.empty()) return "Nothing was pocketed.";
     return fmt::format("Pocketed {}.", fmt::join(down, ", "));
 }
@@ -63,9 +64,30 @@ void Controller::play_practice(const physics::Stroke& stroke) {
 }
 
 void Controller::finish_practice_shot() {
-    last_words_ = practice_words(playback_.shot());
+    last_words_ = practice_words(*practice_, playback_.shot());
     mirror_practice();
     begin_turn();
+}
+
+bool Controller::hint_available() const {
+    // The pool AI plays the pool tables only; snooker's and three-cushion's players need a
+    // match's state (the ball on, the scores), which practice has not.
+    return !practice_ || practice_->game() == physics::RackType::eight_ball ||
+           practice_->game() == physics::RackType::nine_ball;
+}
+
+std::vector<int> Controller::practice_targets() const {
+    std::vector<int> reds, all;
+    for (const auto& [id, pos] : practice_->balls()) {
+        if (id == 0) continue;
+        all.push_back(id);
+        if (physics::is_red(id)) reds.push_back(id);
+    }
+    // From the D, the reds rather than a baulk colour; three-cushion: the red, as the opening.
+    if (practice_->game() == physics::RackType::three_cushion &&
+        practice_->balls().count(physics::carom_ball::red))
+        return {physics::carom_ball::red};
+    return practice_->game() == physics::RackType::snooker && !reds.empty() ? reds : all;
 }
 
 bool Controller::move_ball(int id, physics::Vec2 pos) {

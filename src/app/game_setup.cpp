@@ -49,6 +49,21 @@ std::string save_match(const Match& match, bool finished, const std::filesystem:
     return {};
 }
 
+// --game snooker or three_cushion (not practice): a new match on its own table, the seats as
+// the settings say, in front of the pool session.
+void new_match(GameSetup& g, std::optional<physics::RackType> game) {
+    const Settings& s = g.settings;
+    if (game == physics::RackType::snooker) {
+        game::SnookerConfig c;
+        c.names = seat_names(s.names, s.players);
+        g.snooker.emplace(std::move(c));
+    } else if (game == physics::RackType::three_cushion) {
+        game::CaromConfig c;
+        c.names = seat_names(s.names, s.players);
+        g.carom.emplace(std::move(c));
+    }
+}
+
 }  // namespace
 
 std::uint64_t fresh_seed() {
@@ -69,7 +84,6 @@ GameSetup set_up_game(const AppOptions& o) {
     g.settings_path = config_folder() / "settings.json";
     g.autosave_path = data_folder() / "saved-game.json";
     g.position_path = data_folder() / "practice-position.json";
-    g.practice = o.practice;
     LoadedSettings loaded = load_settings(g.settings_path);
     g.settings = loaded.settings;
     if (loaded.message) {
@@ -84,7 +98,12 @@ GameSetup set_up_game(const AppOptions& o) {
     if (o.view) s.view = *o.view;
     if (o.players) s.players = *o.players;
     if (o.noise) s.noise = *o.noise;
-    if (o.game) s.game = *o.game;
+    if (o.game == physics::RackType::eight_ball) s.game = rules::Game::eight_ball;
+    if (o.game == physics::RackType::nine_ball) s.game = rules::Game::nine_ball;
+    if (o.practice)
+        g.practice =
+            o.game.value_or(s.game == rules::Game::eight_ball ? physics::RackType::eight_ball
+                                                              : physics::RackType::nine_ball);
 
     const std::uint64_t seed = o.seed.value_or(fresh_seed());
     g.controller.players = s.players;
@@ -122,6 +141,7 @@ GameSetup set_up_game(const AppOptions& o) {
         }
     }
     g.session.emplace(new_game_config(s, seed));
+    if (!o.practice) new_match(g, o.game);
     return g;
 }
 

@@ -31,7 +31,8 @@ struct GameSetup {
     /// A shared shot (--shot), opened in `session`'s place and played at once
     /// (shot_sharing.hpp, open_shot).
     std::optional<game::AnyShot> shared_shot;
-    bool practice = false;                ///< --practice: start practising at the game's rack
+    /// --practice: start practising at this game's table and balls
+    std::optional<physics::RackType> practice;
     std::filesystem::path position_path;  ///< where Save position writes (practice)
     std::string notice;  ///< shown in the panel (a settings or saved game kept aside, a resume)
     bool notice_is_error = false;  ///< a file was bad (else: news, e.g. the game was resumed)

@@ -1,5 +1,6 @@
 // coolaaber: the game. Options (docs/app.md):
-//   --size WxH  --fullscreen  --game 8ball|9ball  --load FILE  --shot LINK  --practice
+//   --size WxH  --fullscreen  --game 8ball|9ball|snooker|three_cushion  --load FILE  --shot LINK
+//   --practice
 //   --view overhead|cueball
 //   --screenshot FILE (render the first frame offscreen, write a PNG, exit)
 //   --players human,ai:3  --seed N  --noise X  --playback-speed X  --status-file FILE (tests)
@@ -33,14 +34,14 @@ void add_options(CLI::App& cli, CommandLine& line) {
     app::AppOptions& o = line.options;
     cli.add_option("--size", line.size, "window size WIDTHxHEIGHT, e.g. 1280x720");
     cli.add_flag("--fullscreen", o.fullscreen, "start in fullscreen (F11 toggles)");
-    cli.add_option("--game", line.game, "start a new game: 8ball or 9ball")
-        ->check(CLI::IsMember({"8ball", "9ball"}));
+    cli.add_option("--game", line.game, "start a new game: 8ball, 9ball, snooker or three_cushion")
+        ->check(CLI::IsMember({"8ball", "9ball", "snooker", "three_cushion"}));
     CLI::Option* load = cli.add_option("--load", line.load, "resume a saved game from FILE");
     cli.add_option("--shot", line.shot,
                    "open a shot link (shot=1.… or an address ending in #shot=1.…) and play it")
         ->excludes(load);
     cli.add_flag("--practice", o.practice,
-                 "practise alone at the game's rack (8ball or 9ball, see --game), no rules");
+                 "practise alone at the game's table and balls (see --game), no rules");
     cli.add_option("--view", line.view, "overhead or cueball")
         ->check(CLI::IsMember({"overhead", "cueball"}));
     cli.add_option("--screenshot", line.screenshot,
@@ -85,7 +86,10 @@ app::AppOptions read_options(const CommandLine& line) {
     app::AppOptions o = line.options;
     if (!line.size.empty()) read_size(line.size, o);
     if (!line.game.empty())
-        o.game = line.game == "8ball" ? rules::Game::eight_ball : rules::Game::nine_ball;
+        o.game = line.game == "8ball"     ? physics::RackType::eight_ball
+                 : line.game == "9ball"   ? physics::RackType::nine_ball
+                 : line.game == "snooker" ? physics::RackType::snooker
+                                          : physics::RackType::three_cushion;
     if (!line.view.empty())
         o.view = line.view == "overhead" ? app::ViewMode::overhead : app::ViewMode::cue_ball;
     if (!line.load.empty()) o.load = line.load;

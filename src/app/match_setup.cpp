@@ -26,4 +26,17 @@ void start_match(Controller& c, const NewGame& d, ControllerOptions options) {
         c.start_carom(game::CaromSession(carom_config(d)), std::move(options));
 }
 
+physics::RackType practice_game(const NewGame& d) {
+    switch (d.table) {
+        case TableGame::snooker:
+            return physics::RackType::snooker;
+        case TableGame::three_cushion:
+            return physics::RackType::three_cushion;
+        case TableGame::pool:
+            break;
+    }
+    return d.game == rules::Game::eight_ball ? physics::RackType::eight_ball
+                                             : physics::RackType::nine_ball;
+}
+
 }  // namespace app

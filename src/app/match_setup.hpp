@@ -1,4 +1,4 @@
-// Starting a snooker match or a three-cushion game from the New Game dialog.
+// Starting a snooker match, a three-cushion game or practice from the New Game dialog.
 #pragma once
 
 #include "app/controller.hpp"
@@ -11,5 +11,7 @@ game::CaromConfig carom_config(const NewGame& d);
 /// Replaces the controller's game by the dialog's snooker or three-cushion game (both seats
 /// human). Throws std::invalid_argument for options out of range.
 void start_match(Controller& c, const NewGame& d, ControllerOptions options);
+/// The game whose table and balls the dialog's practice sets out.
+physics::RackType practice_game(const NewGame& d);
 
 }  // namespace app

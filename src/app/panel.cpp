@@ -51,6 +51,21 @@ std::optional<std::pair<double, double>> spin_picker(double side, double top, bo
     return std::nullopt;
 }
 
+// The game whose table and balls practice is at, for the title line.
+const char* practice_title(physics::RackType game) {
+    switch (game) {
+        case physics::RackType::eight_ball:
+            return "8-ball";
+        case physics::RackType::nine_ball:
+            return "9-ball";
+        case physics::RackType::snooker:
+            return "Snooker";
+        case physics::RackType::three_cushion:
+            return "Three-cushion";
+    }
+    return "";
+}
+
 // "Aim guide: [level]"; returns the level picked, when one was.
 std::optional<AimGuide> aim_guide_combo(PanelState& st, AimGuide now) {
     std::optional<AimGuide> picked;
@@ -131,17 +146,14 @@ void new_game_dialog(PanelState& st, PanelActions& out) {
     NewGame& d = st.draft;
     table_game_choice(d, st);
     const bool pool = d.table == TableGame::pool;
-    if (!pool) d.practice = false;  // practice: the pool tables
-    ImGui::BeginDisabled(!pool);
     ImGui::Checkbox("Practice (one player, no rules)", &d.practice);
     remember(st, "Practice (one player, no rules)");
-    ImGui::EndDisabled();
     std::vector<std::string> kinds{"human", "random"};
     for (int level = 1; level <= 5; ++level) kinds.push_back(fmt::format("ai:{}", level));
     if (!d.practice)
         for (std::size_t seat = 0; seat < 2; ++seat) seat_row(d, seat, kinds);
     if (auto g = aim_guide_combo(st, d.aim_guide)) d.aim_guide = *g;
-    match_rules_editor(d, st);
+    if (!d.practice) match_rules_editor(d, st);
     if (pool && !d.practice && d.game == rules::Game::eight_ball &&
         ImGui::CollapsingHeader("House rules (8-ball)"))
         house_rules_editor(d.house_rules);
@@ -177,14 +189,14 @@ void header(const Controller& c, PanelState& st) {
     const game::Session& s = c.session();
     ImGui::TextColored(accent, "COOLAABER");
     ImGui::SameLine();
-    const std::string which =
-        c.practicing() ? "practice" : fmt::format("game {}", s.game_number() + 1);
     if (c.snooker() || c.carom())
         match_title(c);
+    else if (const game::Practice* p = c.practice())
+        ImGui::TextDisabled("%s  practice", practice_title(p->game()));
     else
-        ImGui::TextDisabled("%s  %s",
+        ImGui::TextDisabled("%s  game %d",
                             s.config().game == rules::Game::eight_ball ? "8-ball" : "9-ball",
-                            which.c_str());
+                            s.game_number() + 1);
     if (!st.notice.empty()) {
         ImGui::PushTextWrapPos(0.0f);
         if (st.notice_is_error)
@@ -311,10 +323,13 @@ void play_buttons(const Controller& c, const Settings& settings, PanelState& st,
     ImGui::Separator();
     if (auto g = aim_guide_combo(st, settings.aim_guide)) out.aim_guide = g;
     const bool choosing = c.snooker() && c.snooker()->phase() == game::MatchPhase::choose;
-    if (c.human_to_act() && c.session().phase() == game::Phase::shoot && !choosing) {
+    const bool shoot = c.human_to_act() && c.session().phase() == game::Phase::shoot && !choosing;
+    if (shoot && c.hint_available()) {
         const auto [strike, hint] = button_pair(st, "Strike", "Hint");
         out.strike = strike;
         out.hint = hint;
+    } else if (shoot) {
+        out.strike = full_button(st, "Strike");  // no Hint where no player knows the table
     } else {
         ImGui::Dummy(ImVec2(0.0f, ImGui::GetFrameHeight()));
     }
@@ -329,7 +344,10 @@ void play_buttons(const Controller& c, const Settings& settings, PanelState& st,
         ImGui::Dummy(ImVec2(half, ImGui::GetFrameHeight()));
     }
     ImGui::SameLine();
+    // Practice off the pool tables has no rules' position to share (shot_sharing.hpp).
+    ImGui::BeginDisabled(c.practicing() && c.look() != render::GameLook::pool);
     if (ImGui::Button("Copy shot link", ImVec2(half, 0.0f))) out.copy_link = true;
+    ImGui::EndDisabled();
     remember(st, "Copy shot link");
     const auto [new_game, controls] = button_pair(st, "New Game...", "Controls");
     if (new_game) open_new_game(st, settings);

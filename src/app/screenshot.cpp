@@ -29,7 +29,7 @@ int run_screenshot(const AppOptions& options) {
         create_imgui();
         ImGui_ImplOpenGL3_Init("#version 330 core");
         Painter painter(t.controller.session().table(),
-                        t.controller.session().config().params.ball_radius);
+                        t.controller.session().config().params.ball_radius, t.controller.look());
         const PanelLayout layout =
             panel_layout(w, h, dpi_scale(std::getenv("COOLAABER_UI_SCALE"), 0.0f));
         painter.resize(w, h, static_cast<int>(layout.width));

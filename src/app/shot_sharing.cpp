@@ -62,6 +62,10 @@ ShotToShare shot_to_share(const game::Session& session, const physics::Stroke& a
 
 ShotToShare shot_to_share(const Controller& c) {
     const physics::Stroke aimed = c.stroke_of(c.aim());
+    if (c.practicing() && c.look() != render::GameLook::pool)
+        return {std::nullopt,
+                "Practice on this table has no shot links: a link holds a pool position or a "
+                "snooker or three-cushion match."};
     if (c.last_match_shot()) return {*c.last_match_shot(), {}, true};
     if (c.snooker()) return snooker_as_aimed(c, aimed);
     if (c.carom()) return carom_as_aimed(*c.carom(), aimed);

@@ -28,7 +28,8 @@ ShotToShare shot_to_share(const game::Session& session, const physics::Stroke& a
 
 /// Whatever the controller plays: pool as above; snooker and three-cushion the match's last
 /// stroke from the match just before it, or before a frame's or game's first stroke the match
-/// now with the stroke and nomination as aimed (a cue ball in hand placed first).
+/// now with the stroke and nomination as aimed (a cue ball in hand placed first). Practice
+/// shares its position as pool's; on the snooker and carom tables it has no link.
 ShotToShare shot_to_share(const Controller& controller);
 
 /// The session a shared shot opens: its game, house rules, table, physics and position, with

@@ -131,6 +131,9 @@ std::string status_json(const Controller& c, const Settings& s, CameraMode view,
     for (const auto& [id, at] : frame.ball_px) px[std::to_string(id)] = at;
     j["ball_px"] = std::move(px);
     j["practice"] = c.practicing();
+    j["look"] = c.look() == render::GameLook::snooker ? "snooker"
+                : c.look() == render::GameLook::carom ? "carom"
+                                                      : "pool";
     j["match"] = match_json(c);
     j["drawn"] = {{"cue", frame.cue},
                   {"aim_guide", frame.aim_guide},

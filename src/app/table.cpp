@@ -41,9 +41,10 @@ Table::Table(GameSetup s)
     panel.notice_is_error = setup.notice_is_error;
     saved = setup.settings;
     controller.set_power(setup.settings.power);
-    if (setup.practice) start_practice(setup.settings.game);
     if (setup.snooker) controller.start_snooker(std::move(*setup.snooker), setup.controller);
     if (setup.carom) controller.start_carom(std::move(*setup.carom), setup.controller);
+    // Practice after a resumed match: that match stays saved as it was.
+    if (setup.practice) start_practice(*setup.practice);
     setup.snooker.reset();
     setup.carom.reset();
     if (setup.shared_shot) {
@@ -102,11 +103,10 @@ void Table::paste_link(const platform::Window& window) {
     open_link(pasted, LinkFrom::paste);
 }
 
-void Table::start_practice(rules::Game game) {
+void Table::start_practice(physics::RackType game) {
     ControllerOptions opts = setup.controller;
     opts.seed = fresh_seed();
-    controller.start_practice(
-        game::Practice(game, physics::TableSpec{}, physics::Params{}, opts.seed), opts);
+    controller.start_practice(game::Practice::on_own_table(game, opts.seed), opts);
 }
 
 void Table::save_position() {
@@ -196,9 +196,10 @@ void Table::start_new_game(const NewGame& choice) {
     ControllerOptions opts = setup.controller;
     opts.players = s.players;
     opts.seed = fresh_seed();
+    panel.link_note.clear();  // a saved or loaded position's note belongs to the last game
     try {
+        if (choice.practice) return start_practice(practice_game(choice));
         if (choice.table != TableGame::pool) return start_match(controller, choice, opts);
-        if (choice.practice) return start_practice(s.game);
         controller.replace(game::Session(new_game_config(s, opts.seed)), opts);
     } catch (const std::exception& e) {
         panel.notice = e.what();

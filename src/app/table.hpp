@@ -37,7 +37,7 @@ struct Table {
     /// reported and the game is left as it was.
     void open_link(const std::string& text, LinkFrom from);
     void paste_link(const platform::Window& window);
-    void start_practice(rules::Game game);
+    void start_practice(physics::RackType game);
     void save_position();
     void load_position();
     render::Camera camera(float aspect) const;

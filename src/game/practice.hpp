@@ -1,6 +1,7 @@
-// game::Practice: one player alone at a table, no rules: any ball may be moved anywhere it can
-// lie (on the cloth, touching no other ball), a stroke is played with the real physics and the
-// balls pocketed leave the table, and "try again" puts back the position before a shot.
+// game::Practice: one player alone at any game's table (8-ball, 9-ball, snooker,
+// three-cushion), no rules: any ball may be moved anywhere it can lie (on the cloth, touching no
+// other ball), a stroke is played with the real physics and the balls pocketed leave the table
+// (a pocketed cue ball comes back), and "try again" puts back the position before a shot.
 // A position saves and loads as the `simulate` input of docs/cli.md (table, params, balls).
 #pragma once
 
@@ -13,6 +14,7 @@
 
 #include "physics/ball_state.hpp"
 #include "physics/params.hpp"
+#include "physics/rack.hpp"
 #include "physics/shot.hpp"
 #include "physics/stroke.hpp"
 #include "physics/table.hpp"
@@ -22,14 +24,28 @@ namespace game {
 
 class Practice {
   public:
-    /// The rack of `game` (8-ball or 9-ball, from `seed`) with the cue ball on the head spot.
-    /// Throws std::invalid_argument for an invalid table or parameters.
-    Practice(rules::Game game, physics::TableSpec table, physics::Params params,
+    /// The starting position of `game` on `table` with `params`' balls: the 8-ball or 9-ball
+    /// rack (from `seed`) with the cue ball on the head spot, the snooker set-up with the cue
+    /// ball in the D, the three-cushion starting position. Throws std::invalid_argument for an
+    /// invalid table or parameters, or a table that does not suit the game (three-cushion is
+    /// played without pockets, the others with).
+    Practice(physics::RackType game, physics::TableSpec table, physics::Params params,
              std::uint64_t seed);
+    /// `game`'s starting position on its own table and balls: pool on the 9 ft table, snooker
+    /// on the 12 ft table with the snooker balls, three-cushion on the 10 ft carom table with
+    /// the carom balls.
+    static Practice on_own_table(physics::RackType game, std::uint64_t seed);
 
-    /// Whose balls these are: the game racked, or for a loaded position 8-ball when a ball
-    /// above the 9 is on the table, else 9-ball.
-    rules::Game game() const { return game_; }
+    /// Whose table and balls these are: the game set out, or for a loaded position the one
+    /// its table and balls say (docs/game.md, "Practice").
+    physics::RackType game() const { return game_; }
+    /// The pool game whose balls these are (8-ball for the other tables).
+    rules::Game pool_game() const {
+        return game_ == physics::RackType::nine_ball ? rules::Game::nine_ball
+                                                     : rules::Game::eight_ball;
+    }
+    /// A ball as the player names it: "cue ball", "5", "red", "pink", "white", "yellow".
+    std::string ball_name(int id) const;
     const physics::TableSpec& table_spec() const { return spec_; }
     const physics::Table& table() const { return table_; }
     const physics::Params& params() const { return params_; }
@@ -44,9 +60,12 @@ class Practice {
     bool move(int id, physics::Vec2 pos);
 
     /// Plays `stroke` on the cue ball: the balls pocketed leave the table; a pocketed cue ball
-    /// comes back on the head spot (or the free place nearest it). Returns the shot (for
-    /// playback). Throws std::invalid_argument for a stroke outside the session's bounds.
+    /// comes back to its home (return_words(): the head spot, in the D, or the free place
+    /// nearest it). Returns the shot (for playback). Throws std::invalid_argument for a stroke
+    /// outside the session's bounds.
     const physics::Shot& play(const physics::Stroke& stroke);
+    /// Where a pocketed cue ball comes back, in a player's words ("on the head spot").
+    std::string return_words() const;
     /// The position before the last shot not yet taken back (any number of shots back).
     bool can_try_again() const { return !before_.empty(); }
     void try_again();
@@ -60,16 +79,20 @@ class Practice {
     static Practice from_json(std::string_view text);
 
   private:
-    Practice(physics::TableSpec table, physics::Params params);
+    Practice(physics::RackType game, physics::TableSpec table, physics::Params params);
     /// check_move for ball `id` wherever it is (or is not yet): the cloth, the other balls.
     std::optional<std::string> check_place(int id, physics::Vec2 pos) const;
-    physics::Vec2 free_spot_near_head() const;
+    /// Ball `id`'s home if it may come back there (the cue ball; on a table without pockets,
+    /// every ball), else the free place nearest it (snooker's cue ball: in the D).
+    physics::Vec2 free_spot_near_home(int id) const;
+    bool may_lie_at(int id, physics::Vec2 p) const;
 
-    rules::Game game_ = rules::Game::eight_ball;
+    physics::RackType game_ = physics::RackType::eight_ball;
     physics::TableSpec spec_;
     physics::Params params_;
     physics::Table table_;
     std::map<int, physics::Vec2> balls_;
+    std::map<int, physics::Vec2> home_;  ///< where a ball that leaves the table comes back
     std::vector<std::map<int, physics::Vec2>> before_;  ///< the positions before each shot
     std::optional<physics::Shot> last_shot_;
 };

@@ -15,6 +15,9 @@ information bar, whose turn, whether the balls move, where the panel's buttons a
       scoreboard and the words, the after-foul choice, both views
   end_to_end.py three_cushion COOLAABER WORKDIR   a three-cushion game from New Game: a stroke,
       its words, the innings, both views
+  end_to_end.py practice_tables COOLAABER WORKDIR   practice on the snooker table from New Game:
+      a red dragged, a stroke, Try again, Save and Load position; then the three-cushion table;
+      both views of each
 """
 import base64
 import json
@@ -640,10 +643,91 @@ def three_cushion(exe, work):
         g.close()
 
 
+def practice_tables(exe, work):
+    """Practice from New Game on the snooker table: the set-up drawn as snooker, no Hint; a red
+    dragged to a free spot and refused onto the pink; a stroke; Try again; Save position writes
+    the snooker table and balls that coolaaber-cli simulate reads; Load position brings them back;
+    then practice on the three-cushion table; both views of each."""
+    g = Game(exe, work, "--view", "overhead", "--seed", "3")
+    try:
+        g.wait(lambda s: not s["busy"] and s["frames"] >= 4, 30, "the first frames")
+        g.click_widget("New Game...")
+        g.click_widget("Snooker")
+        g.click_widget("Practice (one player, no rules)")
+        g.click_widget("Start")
+        s = g.wait(lambda s: s["practice"] and s["look"] == "snooker" and not s["busy"], 30, "snooker practice")
+        check(s["balls_on_table"] == 21 and s["match"] is None, f"the snooker set-up, no match: {s['balls_on_table']}")
+        check("Hint" not in s["widgets"] and "Strike" in s["widgets"], "Strike without Hint on the snooker table")
+        time.sleep(0.5)
+        g.screenshot("practice-snooker-1-setup.png")
+        red = s["ball_px"]["3"]
+        to = (red[0] - 260, red[1] + 40)
+        drag(g, red, to)
+        s = g.wait(lambda s: s["positions"]["3"] != g.status["positions"]["3"], 10, "the red moved")
+        moved = s["ball_px"]["3"]
+        check(abs(moved[0] - to[0]) < 3 and abs(moved[1] - to[1]) < 3, f"the red lies where it was dropped ({moved} for {to})")
+        drag(g, moved, s["ball_px"]["20"])
+        s = g.wait(lambda s: "on top of the pink" in s["refusal"], 10, "the refusal")
+        check(s["refusal"] == "The red can't go on top of the pink.", f"the refusal names the balls: {s['refusal']!r}")
+        before = s["positions"]
+        key(g, "space")
+        g.wait(lambda s: s["moving"], 10, "the stroke")
+        s = g.wait(lambda s: not s["moving"] and not s["busy"], 60, "the balls to stop")
+        check(s["positions"] != before and s["look"] == "snooker", f"the stroke moved the balls ({s['last_shot']!r})")
+        g.screenshot("practice-snooker-2-shot.png")
+        g.click_widget("Try again")
+        g.wait(lambda s: s["positions"] == before, 10, "the position before the stroke")
+        g.click_widget("Save position")
+        s = g.wait(lambda s: "Saved the position" in s["link_note"], 10, "the save")
+        with open(os.path.join(work, "data", "coolaaber", "practice-position.json")) as f:
+            saved = json.load(f)
+        check(saved["table"]["length"] == 3.569 and saved["params"]["ball_radius"] == 0.02625,
+              f"the 12 ft table and the snooker balls are saved: {saved['table']['length']}, {saved['params']['ball_radius']}")
+        check({str(b["id"]): b["pos"] for b in saved["balls"]} == before, "the file holds the position exactly")
+        saved["strike"] = {"speed": 3.0, "heading_deg": 0.0}
+        out = subprocess.run([os.environ["COOLAABER_CLI"], "simulate"], input=json.dumps(saved), capture_output=True,
+                             text=True, timeout=60)
+        check(out.returncode == 0 and "final" in json.loads(out.stdout), f"coolaaber-cli simulate reads it ({out.stderr.strip()!r})")
+        black = s["ball_px"]["21"]
+        drag(g, black, (black[0] - 150, black[1] + 30))
+        s = g.wait(lambda s: s["positions"] != before, 10, "the black moved")
+        g.click_widget("Load position")
+        s = g.wait(lambda s: "Loaded the position" in s["link_note"], 10, "the load")
+        check(s["positions"] == before and s["look"] == "snooker", "Load position brings the snooker position back")
+        overhead = g.screenshot("practice-snooker-3-overhead.png")
+        g.click_widget("Change View")
+        g.wait(lambda s: s["view"] == "cueball", 10, "the cue-ball view")
+        time.sleep(2.5)
+        cueview = g.screenshot("practice-snooker-4-cue-ball-view.png")
+        check(differing_pixels(overhead, cueview) > 20000, "the cue-ball view shows the snooker table from the cue ball")
+
+        g.click_widget("New Game...")
+        g.click_widget("Three-cushion")
+        g.click_widget("Practice (one player, no rules)")
+        g.click_widget("Start")
+        s = g.wait(lambda s: s["practice"] and s["look"] == "carom" and not s["busy"], 30, "three-cushion practice")
+        check(s["balls_on_table"] == 2 and sorted(s["positions"]) == ["0", "1", "2"], f"white, yellow, red: {s['positions']}")
+        time.sleep(2.5)
+        cueview = g.screenshot("practice-carom-1-cue-ball-view.png")
+        g.click_widget("Change View")
+        g.wait(lambda s: s["view"] == "overhead", 10, "the overhead view")
+        time.sleep(2.5)
+        overhead = g.screenshot("practice-carom-2-overhead.png")
+        check(differing_pixels(overhead, cueview) > 20000, "both views of the carom table drawn")
+        key(g, "space")
+        g.wait(lambda s: s["moving"], 10, "the stroke")
+        s = g.wait(lambda s: not s["moving"] and not s["busy"], 60, "the balls to stop")
+        check(s["last_shot"] == "Nothing was pocketed." and len(s["positions"]) == 3, f"three balls still: {s['positions']}")
+        g.screenshot("practice-carom-3-shot.png")
+    finally:
+        g.close()
+
+
 if __name__ == "__main__":
     test, exe, work = sys.argv[1], sys.argv[2], sys.argv[3]
     {"controls": controls, "game": whole_game, "hinted": hinted_game, "display": no_display,
      "choice": no_choice_after_scratch, "kitchen": kitchen_foul, "guide": guide_marks,
      "resize": resize, "shot": shared_shot,
-     "practice": practice, "snooker": snooker, "three_cushion": three_cushion}[test](exe, work)
+     "practice": practice, "snooker": snooker, "three_cushion": three_cushion,
+     "practice_tables": practice_tables}[test](exe, work)
     print("passed")

@@ -190,3 +190,29 @@ TEST(GameSetup, ACorruptSnookerSaveIsKeptAsideNamingTheField) {
     EXPECT_NE(g.notice.find("it was kept as"), std::string::npos) << g.notice;
     EXPECT_FALSE(fs::exists(f.data() / "saved-game.json")) << "moved aside, not written over";
 }
+
+namespace {
+
+// --game snooker|three_cushion: a new match on its own table; with --practice, practice there.
+TEST(GameSetup, TheGameOptionStartsSnookerAndThreeCushionOrPracticeOnTheirTables) {
+    const Folders f("game-option");
+    app::AppOptions o = options();
+    o.game = physics::RackType::snooker;
+    app::GameSetup g = app::set_up_game(o);
+    ASSERT_TRUE(g.snooker.has_value());
+    EXPECT_FALSE(g.practice.has_value());
+    EXPECT_TRUE(g.session.has_value()) << "the pool session behind the match";
+    o.game = physics::RackType::three_cushion;
+    g = app::set_up_game(o);
+    EXPECT_TRUE(g.carom.has_value());
+    EXPECT_FALSE(g.snooker.has_value());
+    o.practice = true;
+    g = app::set_up_game(o);
+    EXPECT_EQ(g.practice, physics::RackType::three_cushion);
+    EXPECT_FALSE(g.carom.has_value()) << "practice, not a match";
+    o.game.reset();
+    g = app::set_up_game(o);
+    EXPECT_EQ(g.practice, physics::RackType::eight_ball) << "the settings' pool game";
+}
+
+}  // namespace

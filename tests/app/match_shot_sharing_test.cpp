@@ -92,5 +92,17 @@ TEST(MatchShotSharing, AfterTheChoiceTheFoulIsStillTheShotToShare) {
     EXPECT_TRUE(shot_to_share(c).last_shot) << "the foul is still the last shot";
 }
 
+TEST(MatchShotSharing, PracticeSharesPoolPositionsButNotTheSnookerTables) {
+    Controller c(app_test::new_session(), instant());
+    c.start_practice(game::Practice::on_own_table(physics::RackType::snooker, 3), instant());
+    const ShotToShare snooker = shot_to_share(c);
+    EXPECT_FALSE(snooker.shot);
+    EXPECT_NE(snooker.why_not.find("no shot links"), std::string::npos) << snooker.why_not;
+    c.start_practice(game::Practice::on_own_table(physics::RackType::nine_ball, 3), instant());
+    const ShotToShare pool = shot_to_share(c);
+    ASSERT_TRUE(pool.shot) << pool.why_not;
+    EXPECT_TRUE(std::holds_alternative<game::SharedShot>(*pool.shot));
+}
+
 }  // namespace
 }  // namespace app

@@ -106,8 +106,8 @@ TEST(MatchShotLink, AnImpossibleMatchIsRefusedByItsFieldUnderTheLink) {
     nlohmann::json session = nlohmann::json::parse(shot.before.to_json());
     session["state"]["positions"]["7"] = {9.0, 0.5};  // off the 12 ft table
     doc["session"] = session;
-    doc["stroke"] = {{"speed", 2.0}, {"heading_deg", 0.0}, {"side", 0.0}, {"top", 0.0},
-                     {"elevation_deg", 0.0}};
+    doc["stroke"] = {
+        {"speed", 2.0}, {"heading_deg", 0.0}, {"side", 0.0}, {"top", 0.0}, {"elevation_deg", 0.0}};
     const std::string message = error_of(link_of_payload(doc.dump()));
     EXPECT_TRUE(message.starts_with("link.shot.session.state.positions")) << message;
     doc["game"] = "snooker_plus";
