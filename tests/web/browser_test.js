@@ -390,6 +390,13 @@ async function withoutThreads(browser, isolatedUrl, errors) {
           JSON.stringify(b.positions) === JSON.stringify(a.positions),
           `without threads the level-5 game is the same, to its end: ${b.info[0]} after ${b.shots} shots, ` +
           'every ball where the threaded page left it');
+    // Hint thinks the same way.
+    const human = await open(browser, `${url}?status=1&seed=3&game=8ball`, errors, page);
+    const s = await human.g.wait((s) => s.phase === 'shoot' && !s.busy, 30, 'the break');
+    await human.g.clickWidget('Hint');
+    const hinted = await human.g.wait((t) => !t.thinking && t.heading_deg !== s.heading_deg, 60, 'the hint');
+    check(!(await page.evaluate(() => self.crossOriginIsolated)),
+          `Hint works without threads (aim ${s.heading_deg} -> ${hinted.heading_deg} deg)`);
     await page.close();
   } finally {
     server.kill();
