@@ -331,6 +331,7 @@ async function levelFiveGame(browser, url, errors, screenshot, page = null) {
                             errors, page);
   await opened.g.screenshot(screenshot);
   await opened.page.evaluate(() => {
+    // gaps: between two animation frames while the computer thinks.
     window.thinkingSeen = {spans: [], gaps: []};
     // since: when the thinking began (-1: before the first frame seen, a span not timed).
     let last = performance.now(), since = null, first = true;
@@ -381,10 +382,14 @@ async function withoutThreads(browser, isolatedUrl, errors) {
                 `without threads; ${threaded.longestGaps.map(ms)}, median ${ms(threaded.medianGap)} with`);
     console.log(`median level-5 decision: ${ms(run.medianSpan)} without threads, ${ms(threaded.medianSpan)} ` +
                 `with (${(run.medianSpan / threaded.medianSpan).toFixed(2)}x)`);
-    // A decision made on the page's own thread would stop the frames for all of it (1-4 s here).
-    check(run.spans.length >= 3 && run.frames >= 3 * run.spans.length && run.slowestGap < 500,
+    // A decision made on the page's own thread would stop the frames for all of it (1.3-4 s here
+    // after the break). The longest gaps, with threads too, are the frames that draw the table
+    // (SwiftShader) and the machine's load; the median is the page's usual pace.
+    check(run.spans.length >= 3 && run.frames >= 3 * run.spans.length && run.slowestGap < 1000 &&
+          run.medianGap <= 34,
           `the page draws on while the computer thinks without threads (${run.frames} animation frames ` +
-          `while it thought, the longest gap ${ms(run.slowestGap)}; with threads ${ms(threaded.slowestGap)})`);
+          `while it thought, the median gap ${ms(run.medianGap)}, the longest ${ms(run.slowestGap)}; ` +
+          `with threads ${ms(threaded.medianGap)}, ${ms(threaded.slowestGap)})`);
     const [a, b] = [threaded.g.status, run.g.status];
     check(b.phase === 'game_over' && b.winner === a.winner && b.shots === a.shots &&
           JSON.stringify(b.positions) === JSON.stringify(a.positions),
@@ -397,6 +402,21 @@ async function withoutThreads(browser, isolatedUrl, errors) {
     const hinted = await human.g.wait((t) => !t.thinking && t.heading_deg !== s.heading_deg, 60, 'the hint');
     check(!(await page.evaluate(() => self.crossOriginIsolated)),
           `Hint works without threads (aim ${s.heading_deg} -> ${hinted.heading_deg} deg)`);
+    // Restart while the computer thinks: its thinking is finished first (as a thread is waited
+    // for), then the rack is new and the computers play on.
+    const again = await open(browser, `${url}?status=1&seed=12&game=8ball&players=ai:5,ai:5&playback-speed=0`,
+                             errors, page);
+    await again.g.wait((t) => t.shots >= 1, 60, 'the break');
+    await again.g.clickWidget('Restart');  // the dialog opens; the computers play on behind it
+    await sleep(600);
+    const yes = (await again.g.read()).widgets['Yes, restart'];
+    const shots = (await again.g.read()).shots;
+    const thinking = await again.g.wait((t) => t.thinking && t.shots > shots, 60, 'a new decision');
+    await page.mouse.click((yes[0] + yes[2]) / 2, (yes[1] + yes[3]) / 2, {delay: 60});
+    const restarted = await again.g.wait((t) => t.game_number === 1 && t.shots === 0, 60, 'the new rack');
+    await again.g.wait((t) => t.game_number === 1 && t.shots >= 1, 60, 'the break of the new rack');
+    check(restarted.balls_on_table === 15,
+          `Restart while the computer thinks (shot ${thinking.shots + 1}) racks again, and it plays on`);
     await page.close();
   } finally {
     server.kill();
