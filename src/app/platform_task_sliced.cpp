@@ -19,10 +19,12 @@ namespace app::platform {
 
 namespace {
 
-// A slice leaves the frame most of a 60 Hz refresh: a frame with nothing new draws nothing.
+// 10 ms of each 16.7 ms refresh at 60 Hz: the rest is the frame's, and one with nothing new to
+// draw (the computer thinking) takes little of it.
 constexpr double kSliceMs = 10.0;
-constexpr std::size_t kCStackBytes = 1 << 20;  // the AI's deepest search, with room to spare
-constexpr std::size_t kAsyncifyBytes = 1 << 17;  // the frames' locals saved while paused
+// The threaded page's threads have Emscripten's default of 2 MiB: the same for the fiber.
+constexpr std::size_t kCStackBytes = 2 << 20;
+constexpr std::size_t kAsyncifyBytes = 1 << 17;  // the paused frames' locals
 
 class SlicedTask;
 
