@@ -269,8 +269,8 @@ void Controller::begin_match_turn() {
     const bool shoot = snooker_ ? snooker_->phase() == game::MatchPhase::shoot
                                 : carom_->phase() == game::MatchPhase::shoot;
     if (match_computer_to_act() && (snooker_ ? snooker_->to_act() : carom_->to_act())) {
-        // A computer seat: it decides beside the frames (app/thinking.hpp) (the session is not
-        // touched meanwhile).
+        // A computer seat: it decides beside the frames (app/thinking.hpp); the session is not
+        // touched meanwhile.
         if (snooker_) {
             const auto decide = snooker_players_[rules::index(*snooker_->to_act())]->decide;
             const game::SnookerSession* s = &*snooker_;
