@@ -40,9 +40,13 @@ endif()
 
 # ---- The game in the browser
 # Threads (the computer player and Hint think on a worker, the page never freezes): every object
-# is compiled with -pthread; the page then needs the COOP/COEP headers (docs/web.md).
-add_compile_options(-pthread)
-add_link_options(-pthread)
+# is compiled with -pthread; the page then needs the COOP/COEP headers (docs/web.md). The
+# fallback without them (the `web-nothreads` preset) is the same game without -pthread, whose
+# thinking runs in time slices between frames (app/platform_task_sliced.cpp).
+if(COOLAABER_WEB_THREADS)
+  add_compile_options(-pthread)
+  add_link_options(-pthread)
+endif()
 
 # render's OpenGL: WebGL 2 is OpenGL ES 3.0. The sources include <epoxy/gl.h> (the desktop's
 # loader); here that name is cmake/web-shims/epoxy/gl.h, Emscripten's GLES 3 header, and the
@@ -66,7 +70,9 @@ add_library(OpenAL::OpenAL ALIAS openal_web)
 
 # Dear ImGui: its core and the GLFW and OpenGL ES 3 backends, compiled from Debian's source
 # package (the same 1.86 as the desktop's libimgui-dev), fetched once into the build folder.
-set(IMGUI_CACHE ${CMAKE_BINARY_DIR}/imgui-src)
+# The fallback's build shares the threaded build's copy (COOLAABER_IMGUI_CACHE, CMakePresets.json).
+set(COOLAABER_IMGUI_CACHE ${CMAKE_BINARY_DIR}/imgui-src CACHE PATH "Dear ImGui's fetched sources")
+set(IMGUI_CACHE ${COOLAABER_IMGUI_CACHE})
 execute_process(COMMAND ${PROJECT_SOURCE_DIR}/scripts/fetch-imgui-source ${IMGUI_CACHE}
                 RESULT_VARIABLE fetched)
 file(GLOB IMGUI_DIR ${IMGUI_CACHE}/imgui-*)
@@ -86,22 +92,41 @@ target_link_options(imgui_web PUBLIC -sUSE_GLFW=3 -sMIN_WEBGL_VERSION=2 -sMAX_WE
 # The page: coolaaber.html (from src/app/web/shell.html), .js, .wasm, .data (the fonts), the
 # worker script for the threads, and the installable app's files.
 function(coolaaber_web_page target)
-  set_target_properties(${target} PROPERTIES SUFFIX .html)
   set(web ${PROJECT_SOURCE_DIR}/src/app/web)
   # The fonts where the desktop finds them: the panel's, and the balls' numbers.
   set(fonts /usr/share/fonts/truetype/dejavu)
   target_link_options(${target} PRIVATE
-    "SHELL:--shell-file ${web}/shell.html" -sMINIFY_HTML=0
-    -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=64MB -sPTHREAD_POOL_SIZE=4
+    -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=64MB
     -sEXPORTED_RUNTIME_METHODS=FS -sENVIRONMENT=web,worker
     -lidbfs.js "SHELL:--pre-js ${web}/files.js"
     # SHELL: keeps each pair (CMake would merge the repeated --preload-file).
     "SHELL:--preload-file ${fonts}/DejaVuSans.ttf@${fonts}/DejaVuSans.ttf"
     "SHELL:--preload-file ${fonts}/DejaVuSans-Bold.ttf@${fonts}/DejaVuSans-Bold.ttf")
-  set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS ${web}/shell.html ${web}/files.js)
+  set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS ${web}/files.js)
+  if(NOT COOLAABER_WEB_THREADS)
+    coolaaber_web_fallback(${target})
+    return()
+  endif()
+  set_target_properties(${target} PROPERTIES SUFFIX .html)
+  target_link_options(${target} PRIVATE "SHELL:--shell-file ${web}/shell.html" -sMINIFY_HTML=0
+                      -sPTHREAD_POOL_SIZE=4)
+  set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS ${web}/shell.html)
   # The installable app: the service worker (offline, and the headers), its manifest and icon.
   foreach(file sw.js coolaaber.webmanifest icon.svg)
     add_custom_command(TARGET ${target} POST_BUILD COMMAND ${CMAKE_COMMAND} -E copy_if_different
                        ${web}/${file} $<TARGET_FILE_DIR:${target}>/${file})
   endforeach()
+endfunction()
+
+# The fallback without threads: coolaaber-nothreads.js (.wasm, .data) beside the threaded page
+# (COOLAABER_WEB_PAGE_DIR), which loads it where the page is not cross-origin isolated. The
+# thinking's fibers swap stacks by Asyncify; the modules that never hold a paused stack (no AI
+# pause point below them) are left uninstrumented, which keeps the wasm small and fast.
+function(coolaaber_web_fallback target)
+  set_target_properties(${target} PROPERTIES SUFFIX .js OUTPUT_NAME coolaaber-nothreads)
+  if(COOLAABER_WEB_PAGE_DIR)
+    set_target_properties(${target} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${COOLAABER_WEB_PAGE_DIR})
+  endif()
+  target_link_options(${target} PRIVATE -sASYNCIFY
+    "-sASYNCIFY_REMOVE=['physics::*','rules::*','render::*','audio::*','Im*']")
 endfunction()

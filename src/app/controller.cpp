@@ -337,8 +337,7 @@ void Controller::update(double dt) {
         return;
     }
     if ((snooker_ || carom_) && update_match_computer(dt)) return;
-    if (thinking_.valid() &&
-        thinking_.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
+    if (thinking_.valid() && thinking_.ready()) {
         game::Decision d;
         try {
             d = thinking_.get();
@@ -377,7 +376,7 @@ void Controller::hint() {
     game::Player* player = hint_player_.get();
     const game::Session* s = &session_;
     hinting_ = true;
-    thinking_ = std::async(std::launch::async, [player, s] { return player->decide(*s); });
+    thinking_ = Thinking<game::Decision>::start([player, s] { return player->decide(*s); });
 }
 
 void Controller::apply_hint(const game::Decision& d) {
@@ -400,7 +399,7 @@ void Controller::apply_hint(const game::Decision& d) {
 void Controller::launch_computer() {
     game::Player* player = computers_[rules::index(*session_.to_act())].get();
     const game::Session* s = &session_;
-    thinking_ = std::async(std::launch::async, [player, s] { return player->decide(*s); });
+    thinking_ = Thinking<game::Decision>::start([player, s] { return player->decide(*s); });
 }
 
 void Controller::wait_for_computer() const {

@@ -3,13 +3,12 @@
 // these calls and draws what the queries return (update, then draw).
 //
 //   human:    aim (turn, power, spin) ─▶ strike ─┐
-//   computer: decide (worker thread) ─▶ show aim ─▶ strike with execution noise ─┤
+//   computer: decide (beside the frames) ─▶ show aim ─▶ strike with execution noise ─┤
 //                                                                               ▼
 //             Session::play ─▶ Playback (real time, skippable) ─▶ next turn / choice / game over
 #pragma once
 
 #include <array>
-#include <future>
 #include <memory>
 #include <optional>
 #include <string>
@@ -18,6 +17,7 @@
 #include "app/aim_preview.hpp"
 #include "app/ball_orientations.hpp"
 #include "app/playback.hpp"
+#include "app/thinking.hpp"
 #include "game/carom_session.hpp"
 #include "game/match_player.hpp"
 #include "game/player.hpp"
@@ -259,7 +259,7 @@ class Controller {
     Aim human_aim_;  ///< the humans' power, spin and elevation, kept while a computer aims
     std::optional<AimPreview> preview_;
     std::optional<rules::Call> manual_call_;
-    std::future<game::Decision> thinking_;
+    Thinking<game::Decision> thinking_;
     std::optional<game::Decision> computer_decision_;  ///< decided, shown before the strike
     std::unique_ptr<game::Player> hint_player_;        ///< the AI asked for a hint
     bool hinting_ = false;  ///< thinking_ (in a match, match_thinking_) is a hint for the human
@@ -280,7 +280,7 @@ class Controller {
     std::optional<int> manual_nomination_;  ///< the player's own nomination
     std::array<std::optional<game::SnookerPlayer>, 2> snooker_players_;  ///< computer seats
     std::array<std::optional<game::CaromPlayer>, 2> carom_players_;
-    std::future<game::MatchDecision> match_thinking_;
+    Thinking<game::MatchDecision> match_thinking_;
     std::optional<game::MatchDecision> match_decision_;  ///< decided, shown before the strike
     std::optional<StrokeShown> match_stroke_;
     std::optional<game::AnyShot> last_match_shot_;

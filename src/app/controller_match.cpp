@@ -136,8 +136,7 @@ bool Controller::match_computer_to_act() const {
 
 bool Controller::update_match_computer(double dt) {
     if (match_thinking_.valid()) {
-        if (match_thinking_.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
-            return true;
+        if (!match_thinking_.ready()) return true;
         try {
             const game::MatchDecision d = match_thinking_.get();
             hinting_ ? apply_match_hint(d) : apply_match_computer(d);
@@ -193,11 +192,11 @@ void Controller::match_hint(std::uint64_t seed) {
     if (snooker_) {
         const auto decide = snooker_computer("ai:5", seed, options_.noise)->decide;
         const game::SnookerSession* s = &*snooker_;
-        match_thinking_ = std::async(std::launch::async, [decide, s] { return decide(*s); });
+        match_thinking_ = Thinking<game::MatchDecision>::start([decide, s] { return decide(*s); });
     } else {
         const auto decide = carom_computer("ai:5", seed, options_.noise)->decide;
         const game::CaromSession* s = &*carom_;
-        match_thinking_ = std::async(std::launch::async, [decide, s] { return decide(*s); });
+        match_thinking_ = Thinking<game::MatchDecision>::start([decide, s] { return decide(*s); });
     }
 }
 
@@ -274,15 +273,18 @@ void Controller::begin_match_turn() {
     const bool shoot = snooker_ ? snooker_->phase() == game::MatchPhase::shoot
                                 : carom_->phase() == game::MatchPhase::shoot;
     if (match_computer_to_act() && (snooker_ ? snooker_->to_act() : carom_->to_act())) {
-        // A computer seat: it decides on a worker thread (the session is not touched meanwhile).
+        // A computer seat: it decides beside the frames (app/thinking.hpp); the session is not
+        // touched meanwhile.
         if (snooker_) {
             const auto decide = snooker_players_[rules::index(*snooker_->to_act())]->decide;
             const game::SnookerSession* s = &*snooker_;
-            match_thinking_ = std::async(std::launch::async, [decide, s] { return decide(*s); });
+            match_thinking_ =
+                Thinking<game::MatchDecision>::start([decide, s] { return decide(*s); });
         } else {
             const auto decide = carom_players_[rules::index(*carom_->to_act())]->decide;
             const game::CaromSession* s = &*carom_;
-            match_thinking_ = std::async(std::launch::async, [decide, s] { return decide(*s); });
+            match_thinking_ =
+                Thinking<game::MatchDecision>::start([decide, s] { return decide(*s); });
         }
         return;
     }

@@ -1,7 +1,9 @@
 // The platform layer: everything that touches the window system, input, the clipboard, timing
 // and the main loop. One implementation per platform, chosen by CMake (src/app/CMakeLists.txt):
-// platform_desktop.cpp (SDL2) and platform_web.cpp (Emscripten's GLFW, the browser's loop).
-// The game's frame (app.cpp) sees only this header.
+// platform_desktop.cpp (SDL2) and platform_web.cpp (Emscripten's GLFW, the browser's loop); and
+// for the work beside the frames (Task), platform_task_threads.cpp (a thread: the desktop and the
+// threaded web page) or platform_task_sliced.cpp (the web page without threads: time slices
+// between the browser's frames). The game's frame (app.cpp) sees only this header.
 #pragma once
 
 #include <functional>
@@ -79,6 +81,22 @@ class Window {
     /// browser's storage (IndexedDB) from here.
     virtual void files_written() = 0;
 };
+
+/// Work that runs beside the frames (the computer player's and Hint's thinking): on its own
+/// thread, or, in the web page without threads, in slices of a few milliseconds between the
+/// browser's frames (it pauses at the AI's pause points, ai/pause.hpp).
+class Task {
+  public:
+    /// Waits for the work to end first (it may use what its starter owns).
+    virtual ~Task() = default;
+    /// Whether the work has returned.
+    virtual bool done() = 0;
+    /// Returns once the work has (without threads: runs the rest of it now).
+    virtual void wait() = 0;
+};
+
+/// Starts `work`, which catches what it throws.
+std::unique_ptr<Task> start_task(std::function<void()> work);
 
 /// Calls `frame` until it returns false: a loop on the desktop; on the web, once per animation
 /// frame of the browser, returning at once (the page lives on).

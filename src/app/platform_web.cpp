@@ -13,6 +13,7 @@
 #include <string>
 
 #include "app/platform.hpp"
+#include "app/platform_slices.hpp"
 
 namespace app::platform {
 
@@ -288,6 +289,8 @@ void run(std::function<bool()> frame) {
     auto* owned = new std::function<bool()>(std::move(frame));
     emscripten_set_main_loop_arg(
         [](void* arg) {
+            // Without threads the computer thinks here, a slice before each frame.
+            run_task_slice();
             auto* f = static_cast<std::function<bool()>*>(arg);
             if ((*f)()) return;
             emscripten_cancel_main_loop();

@@ -7,6 +7,7 @@
 
 #include "ai/internal/planner.hpp"
 #include "ai/internal/table_value.hpp"
+#include "ai/pause.hpp"
 #include "ai_support.hpp"
 
 namespace {
@@ -151,6 +152,30 @@ TEST(Decisions, SameSeedSameDecisionWhateverTheThreads) {
         expect_same(a.decision, c.decision);
         EXPECT_EQ(a.simulations, c.simulations);
         EXPECT_TRUE(same_bits(a.expected_success, c.expected_success));
+    }
+}
+
+// A pause hook (ai/pause.hpp; the web page without threads returns to its frames there) is called
+// between steps and changes no bit of the decision, alone or beside a simulation worker.
+int pauses = 0;
+void count_pause() {
+    ++pauses;
+}
+
+TEST(Decisions, APauseHookChangesNothing) {
+    const ai::Position pos =
+        position(Game::nine_ball, {1, 5, 9},
+                 {{0, {0.9, 0.5}}, {1, {1.6, 0.8}}, {5, {2.1, 0.4}}, {9, {0.5, 1.0}}});
+    for (int workers : {1, 2}) {
+        const ai::Plan plain = ai::plan(pos, {5, 1.0, workers}, 7);
+        pauses = 0;
+        EXPECT_EQ(ai::set_pause_hook(&count_pause), nullptr);
+        const ai::Plan paused = ai::plan(pos, {5, 1.0, workers}, 7);
+        EXPECT_EQ(ai::set_pause_hook(nullptr), &count_pause);
+        expect_same(plain.decision, paused.decision);
+        EXPECT_EQ(plain.simulations, paused.simulations);
+        EXPECT_TRUE(same_bits(plain.expected_value, paused.expected_value));
+        EXPECT_GT(pauses, 100);  // paused between steps all through the search
     }
 }
 

@@ -10,6 +10,7 @@
 #include <numeric>
 
 #include "ai/games_play.hpp"
+#include "ai/pause.hpp"
 #include "physics/layout.hpp"
 #include "physics/markings.hpp"
 #include "physics/rack.hpp"
@@ -187,6 +188,39 @@ TEST(ThreeCushionPlayer, ScoresTheOpeningAndIsReproducible) {
     const rules::CaromVerdict v = rules::judge_three_cushion(
         pos.options, physics::carom_spots(table), params.ball_radius, pos.state, shot.events());
     EXPECT_TRUE(v.point);
+}
+
+// A pause hook (ai/pause.hpp) changes no bit of the snooker or three-cushion plans.
+int pauses = 0;
+void count_pause() {
+    ++pauses;
+}
+
+TEST(GamesPauseHook, ChangesNoPlan) {
+    const SnookerSetup t;
+    const SnookerPosition pos =
+        snooker_position(t.table, t.params, {}, snooker_start(t.table, t.params, 6));
+    const physics::Params carom = *physics::params_preset("carom");
+    const physics::Table carom_table = physics::build_table(physics::carom_table_spec());
+    CaromPosition cpos{{}, carom_table, carom, {}};
+    for (const physics::BallState& b : physics::carom_rack(carom_table))
+        cpos.state.positions[b.id] = b.pos;
+    const SnookerPlan a = plan_snooker(pos, {5, 1.0, 1}, 42);
+    const CaromPlan c = plan_three_cushion(cpos, {5, 1.0, 1}, 11);
+    ai::set_pause_hook(&count_pause);
+    const SnookerPlan b = plan_snooker(pos, {5, 1.0, 1}, 42);
+    const int snooker_pauses = pauses;
+    const CaromPlan d = plan_three_cushion(cpos, {5, 1.0, 1}, 11);
+    ai::set_pause_hook(nullptr);
+    EXPECT_TRUE(same_stroke(a.stroke, b.stroke));
+    EXPECT_EQ(a.cue_pos, b.cue_pos);
+    EXPECT_EQ(a.nominated, b.nominated);
+    EXPECT_EQ(a.simulations, b.simulations);
+    EXPECT_EQ(a.expected_value, b.expected_value);
+    EXPECT_TRUE(same_stroke(c.stroke, d.stroke));
+    EXPECT_EQ(c.expected_value, d.expected_value);
+    EXPECT_GT(snooker_pauses, 100);
+    EXPECT_GT(pauses - snooker_pauses, 100);
 }
 
 TEST(ThreeCushionPlayer, WholeGamesEnd) {

@@ -322,6 +322,107 @@ async function withoutHeaders(browser, errors) {
   }
 }
 
+// ---- Without threads: the fallback build (coolaaber-nothreads.js) and its thinking between frames.
+
+// Two level-5 computer players play a game of 8-ball to its end; in the page, each animation frame
+// notes whether the computer is thinking: the decisions' times and the gaps between frames meanwhile.
+async function levelFiveGame(browser, url, errors, screenshot, page = null) {
+  const opened = await open(browser, `${url}?status=1&seed=11&game=8ball&players=ai:5,ai:5&playback-speed=0`,
+                            errors, page);
+  await opened.g.screenshot(screenshot);
+  await opened.page.evaluate(() => {
+    // gaps: between two animation frames while the computer thinks.
+    window.thinkingSeen = {spans: [], gaps: []};
+    // since: when the thinking began (-1: before the first frame seen, a span not timed).
+    let last = performance.now(), since = null, first = true;
+    const tick = (now) => {
+      let thinking = false;
+      try {
+        thinking = JSON.parse(Module.FS.readFile('/status.json', {encoding: 'utf8'})).thinking;
+      } catch (e) {}
+      if (since !== null) window.thinkingSeen.gaps.push(now - last);
+      if (thinking && since === null) since = first ? -1 : now;
+      if (!thinking && since !== null) {
+        if (since >= 0) window.thinkingSeen.spans.push(now - since);
+        since = null;
+      }
+      first = false;
+      last = now;
+      requestAnimationFrame(tick);
+    };
+    requestAnimationFrame(tick);
+  });
+  await opened.g.wait((s) => s.winner !== null, 600, 'the end of a level-5 game');
+  const seen = await opened.page.evaluate(() => window.thinkingSeen);
+  const median = (xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
+  const longest = [...seen.gaps].sort((a, b) => b - a);
+  return {...opened, spans: seen.spans, slowestGap: longest[0], longestGaps: longest.slice(0, 5),
+          medianSpan: median(seen.spans), medianGap: median(seen.gaps), frames: seen.gaps.length};
+}
+
+// A host without the two headers and without a service worker (bypassed, as where none can run):
+// the page loads the fallback, says so, plays, and keeps drawing while the computer thinks.
+async function withoutThreads(browser, isolatedUrl, errors) {
+  const threaded = await levelFiveGame(browser, isolatedUrl, errors, '9-level-5-threads.png');
+  await threaded.page.close();  // its last status stays in threaded.g.status
+  const {server, url} = await serve('--no-isolation');
+  try {
+    const page = await browser.newPage();
+    await page.setBypassServiceWorker(true);
+    const run = await levelFiveGame(browser, url, errors, '10-level-5-without-threads.png', page);
+    check(!(await page.evaluate(() => self.crossOriginIsolated)) &&
+          await page.evaluate(() => !!document.querySelector('script[src="coolaaber-nothreads.js"]')),
+          'without the headers and the service worker the page loads the build without threads');
+    const notice = await page.evaluate(() => document.getElementById('no-threads').textContent);
+    check(notice.startsWith('Playing without threads'), `the page says so: ${notice.slice(0, 60)}...`);
+    await run.g.screenshot('11-without-threads-game-over.png');
+    const ms = (x) => `${Math.round(x)} ms`;
+    console.log(`level-5 decisions, threads: ${threaded.spans.map(ms)}; without: ${run.spans.map(ms)}`);
+    console.log(`frames while thinking: the 5 longest gaps ${run.longestGaps.map(ms)}, median ${ms(run.medianGap)} ` +
+                `without threads; ${threaded.longestGaps.map(ms)}, median ${ms(threaded.medianGap)} with`);
+    console.log(`median level-5 decision: ${ms(run.medianSpan)} without threads, ${ms(threaded.medianSpan)} ` +
+                `with (${(run.medianSpan / threaded.medianSpan).toFixed(2)}x)`);
+    // A decision made on the page's own thread would stop the frames for all of it (1.3-4 s here
+    // after the break). The longest gaps, with threads too, are the frames that draw the table
+    // (SwiftShader) and the machine's load; the median is the page's usual pace.
+    check(run.spans.length >= 3 && run.frames >= 3 * run.spans.length && run.slowestGap < 1000 &&
+          run.medianGap <= 34,
+          `the page draws on while the computer thinks without threads (${run.frames} animation frames ` +
+          `while it thought, the median gap ${ms(run.medianGap)}, the longest ${ms(run.slowestGap)}; ` +
+          `with threads ${ms(threaded.medianGap)}, ${ms(threaded.slowestGap)})`);
+    const [a, b] = [threaded.g.status, run.g.status];
+    check(b.phase === 'game_over' && b.winner === a.winner && b.shots === a.shots &&
+          JSON.stringify(b.positions) === JSON.stringify(a.positions),
+          `without threads the level-5 game is the same, to its end: ${b.info[0]} after ${b.shots} shots, ` +
+          'every ball where the threaded page left it');
+    // Hint thinks the same way.
+    const human = await open(browser, `${url}?status=1&seed=3&game=8ball`, errors, page);
+    const s = await human.g.wait((s) => s.phase === 'shoot' && !s.busy, 30, 'the break');
+    await human.g.clickWidget('Hint');
+    const hinted = await human.g.wait((t) => !t.thinking && t.heading_deg !== s.heading_deg, 60, 'the hint');
+    check(!(await page.evaluate(() => self.crossOriginIsolated)),
+          `Hint works without threads (aim ${s.heading_deg} -> ${hinted.heading_deg} deg)`);
+    // Restart while the computer thinks: its thinking is finished first (as a thread is waited
+    // for), then the rack is new and the computers play on.
+    const again = await open(browser, `${url}?status=1&seed=12&game=8ball&players=ai:5,ai:5&playback-speed=0`,
+                             errors, page);
+    await again.g.wait((t) => t.shots >= 1, 60, 'the break');
+    await again.g.clickWidget('Restart');  // the dialog opens; the computers play on behind it
+    await sleep(600);
+    const yes = (await again.g.read()).widgets['Yes, restart'];
+    const shots = (await again.g.read()).shots;
+    const thinking = await again.g.wait((t) => t.thinking && t.shots > shots, 60, 'a new decision');
+    await page.mouse.click((yes[0] + yes[2]) / 2, (yes[1] + yes[3]) / 2, {delay: 60});
+    const restarted = await again.g.wait((t) => t.game_number === 1 && t.shots === 0, 60, 'the new rack');
+    await again.g.wait((t) => t.game_number === 1 && t.shots >= 1, 60, 'the break of the new rack');
+    check(restarted.balls_on_table === 15,
+          `Restart while the computer thinks (shot ${thinking.shots + 1}) racks again, and it plays on`);
+    await page.close();
+  } finally {
+    server.kill();
+  }
+}
+
 (async () => {
   fs.mkdirSync(work, {recursive: true});
   const {server, url} = await serve();
@@ -339,6 +440,7 @@ async function withoutHeaders(browser, errors) {
     if (run('computer')) await computerGame(browser, url, errors);
     if (run('touch')) await touch(browser, url, errors);
     if (run('headers')) await withoutHeaders(browser, errors);
+    if (run('nothreads')) await withoutThreads(browser, url, errors);
     check(errors.length === 0, 'no console errors');
   } finally {
     await browser.close();

@@ -16,6 +16,9 @@
 
 namespace ai {
 
+/// Calls this thread's pause hook, if any (ai/pause.hpp): between two steps, never inside one.
+void pause_point();
+
 /// Calls f(i) for every i in [0, n), on `workers` threads (the caller's included).
 template <typename F>
 void parallel_for(std::size_t n, int workers, const F& f) {
@@ -32,6 +35,7 @@ void parallel_for(std::size_t n, int workers, const F& f) {
                 std::lock_guard<std::mutex> lock(error_mutex);
                 if (!error) error = std::current_exception();
             }
+            pause_point();
         }
     };
     std::vector<std::thread> threads;
