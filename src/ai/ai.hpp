@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "ai/pause.hpp"
 #include "game/player.hpp"
 #include "physics/params.hpp"
 #include "physics/table.hpp"
@@ -51,6 +52,7 @@ struct PlanSettings {
     int level = max_level;  ///< 1 (beginner) to 5 (strongest)
     double noise = 1.0;     ///< the game's execution-noise scale (the level's multiplier on top)
     int workers = 2;        ///< threads that share the simulations
+    PauseHook pause = nullptr;  ///< called between the search's steps (ai/pause.hpp), or none
 };
 
 struct Plan {
@@ -75,7 +77,9 @@ double planned_scale(const PlanSettings& settings);
 class AiPlayer final : public game::Player {
   public:
     /// `noise`: the execution-noise scale of the game it plays in (the match's --noise).
-    AiPlayer(int level, std::uint64_t seed, double noise = 1.0, int workers = 2);
+    /// `pause`: PlanSettings::pause.
+    AiPlayer(int level, std::uint64_t seed, double noise = 1.0, int workers = 2,
+             PauseHook pause = nullptr);
 
     std::string kind() const override { return "ai:" + std::to_string(settings_.level); }
     game::Decision decide(const game::Session& session) override;

@@ -12,8 +12,8 @@ std::uint64_t decision_seed(std::uint64_t seed, std::uint64_t n) {
     return mix.next();
 }
 
-AiPlayer::AiPlayer(int level, std::uint64_t seed, double noise, int workers)
-    : settings_{std::clamp(level, min_level, max_level), noise, workers}, seed_(seed) {}
+AiPlayer::AiPlayer(int level, std::uint64_t seed, double noise, int workers, PauseHook pause)
+    : settings_{std::clamp(level, min_level, max_level), noise, workers, pause}, seed_(seed) {}
 
 double AiPlayer::execution_noise() const {
     return noise_multiplier(settings_.level);

@@ -71,7 +71,7 @@ std::vector<physics::Stroke> sweep(const CaromPosition& pos, const rules::CaromS
 }
 
 std::vector<Outcome> play_all(const CaromPosition& pos, const rules::CaromState& s,
-                              const std::vector<physics::Stroke>& strokes, int workers) {
+                              const std::vector<physics::Stroke>& strokes, Workers workers) {
     std::vector<Outcome> out(strokes.size());
     parallel_for(strokes.size(), workers,
                  [&](std::size_t i) { out[i] = play(pos, s, strokes[i]); });
@@ -114,7 +114,7 @@ std::vector<Run> scoring_runs(const std::vector<physics::Stroke>& strokes,
 // Moves each run's stroke to the middle of its window of scoring headings, found on a sweep
 // `fine` times finer around it: a heading near a window's edge misses with much of the noise.
 void centre_runs(const CaromPosition& pos, std::vector<Run>& runs, int headings, int fine,
-                 int workers, std::int64_t& simulations) {
+                 Workers workers, std::int64_t& simulations) {
     const double step = 360.0 / headings / fine;
     std::vector<std::vector<char>> scores(runs.size());
     std::vector<std::pair<std::size_t, int>> jobs;  // (run, offset in fine steps)
@@ -155,7 +155,7 @@ void centre_runs(const CaromPosition& pos, std::vector<Run>& runs, int headings,
 // every run.
 std::vector<double> point_rates(const CaromPosition& pos, const std::vector<Run>& runs,
                                 const CaromEffort& effort, double scale, std::uint64_t seed,
-                                int workers, std::int64_t& simulations) {
+                                Workers workers, std::int64_t& simulations) {
     std::vector<double> rate(runs.size(), 1.0);
     if (scale == 0.0) return rate;
     const std::size_t n = std::size_t(effort.samples);
@@ -176,7 +176,7 @@ std::vector<double> point_rates(const CaromPosition& pos, const std::vector<Run>
 // counting in full).
 std::vector<double> with_leaves(const CaromPosition& pos, const std::vector<Run>& runs,
                                 const std::vector<double>& rate, const CaromEffort& effort,
-                                int workers, std::int64_t& simulations) {
+                                Workers workers, std::int64_t& simulations) {
     std::vector<double> value = rate;
     std::vector<std::size_t> order(runs.size());
     std::iota(order.begin(), order.end(), 0);
@@ -202,7 +202,7 @@ CaromPlan plan_three_cushion(const CaromPosition& pos, const PlanSettings& setti
                              std::uint64_t seed) {
     const CaromEffort effort = carom_effort(settings.level);
     const double scale = planned_scale(settings);
-    const int workers = std::max(settings.workers, 1);
+    const Workers workers{std::max(settings.workers, 1), settings.pause};
     CaromPlan plan;
     const std::vector<physics::Stroke> strokes =
         sweep(pos, pos.state, effort.headings, effort.speeds, effort.spins);

@@ -135,7 +135,7 @@ Trial Evaluator::deep_trial(const Candidate& c, const NoiseDraw& draw, const Eff
 std::int64_t score_under_noise(const Evaluator& eval, const std::vector<Candidate>& candidates,
                                const std::vector<std::size_t>& which,
                                const std::vector<NoiseDraw>& draws, std::size_t first,
-                               std::size_t count, std::vector<Score>& scores, int workers) {
+                               std::size_t count, std::vector<Score>& scores, Workers workers) {
     parallel_for(which.size(), workers, [&](std::size_t k) {
         const std::size_t i = which[k];
         Score& s = scores[i];
@@ -161,7 +161,7 @@ std::int64_t score_under_noise(const Evaluator& eval, const std::vector<Candidat
 std::int64_t score_deep(const Evaluator& eval, const std::vector<Candidate>& candidates,
                         const std::vector<std::size_t>& which, const std::vector<NoiseDraw>& draws,
                         std::size_t first, std::size_t count, const Effort& effort,
-                        std::vector<Score>& scores, int workers) {
+                        std::vector<Score>& scores, Workers workers) {
     // Without noise (no draws) one exact play; else the draws [first, first + count) there are.
     const std::size_t begin = draws.empty() ? 0 : std::min(first, draws.size());
     const std::size_t n = draws.empty() ? 1 : std::min(count, draws.size() - begin);

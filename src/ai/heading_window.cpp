@@ -85,7 +85,8 @@ std::optional<Candidate> centred(const Evaluator& eval, const Candidate& c,
 
 std::vector<Candidate> centred_kicks(const Evaluator& eval, const std::vector<Candidate>& kicks,
                                      const std::vector<Score>& nominal, std::size_t count,
-                                     double max_raise_deg, std::int64_t& simulations, int workers) {
+                                     double max_raise_deg, std::int64_t& simulations,
+                                     Workers workers) {
     std::vector<std::size_t> potting;
     for (std::size_t i = 0; i < kicks.size(); ++i)
         if (kicks[i].kind == Kind::kick && nominal[i].stays) potting.push_back(i);

@@ -29,7 +29,7 @@ struct Search {
     Effort effort;
     Evaluator eval;
     std::vector<NoiseDraw> draws;
-    int workers;
+    Workers workers;
     std::int64_t simulations = 0;
 };
 
@@ -362,8 +362,11 @@ Plan plan(const Position& pos, const PlanSettings& settings, std::uint64_t seed)
     const double sigma_deg = model_sigma_deg(pos.params, effort, scale);
     if (pos.choice) return plan_choice(pos, sigma_deg, effort.stuck_ball_cost);
 
-    Search s{pos, effort, Evaluator(pos, scale, sigma_deg, effort.stuck_ball_cost),
-             noise_draws(seed, draw_pool(effort)), std::max(settings.workers, 1)};
+    Search s{pos,
+             effort,
+             Evaluator(pos, scale, sigma_deg, effort.stuck_ball_cost),
+             noise_draws(seed, draw_pool(effort)),
+             {std::max(settings.workers, 1), settings.pause}};
     if (pos.state.shot == rules::Shot::break_shot) return plan_break(s);
     return plan_stroke(s, sigma_deg);
 }

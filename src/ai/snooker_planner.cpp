@@ -18,7 +18,7 @@ using physics::Vec2;
 struct Search {
     const SnookerPosition& pos;
     SnookerEffort effort;
-    int workers;
+    Workers workers;
     double scale, sigma_deg;
     SnookerEvaluator eval;
     std::int64_t simulations = 0;
@@ -181,7 +181,8 @@ SnookerPlan plan_snooker(const SnookerPosition& pos, const PlanSettings& setting
     const double sigma_1x =
         effort.model_sigma_deg > 0.0 ? effort.model_sigma_deg : heading_sigma_deg(pos.params);
     const double sigma = sigma_1x * scale;
-    Search k{pos, effort, std::max(settings.workers, 1), scale, sigma, {pos, scale, sigma}};
+    Search k{pos,   effort, {std::max(settings.workers, 1), settings.pause},
+             scale, sigma,  {pos, scale, sigma}};
     Played p = play_candidates(k, cue_spots(k));
     const auto nominal_value = [&](std::size_t i) { return p.nominal[i].value; };
     if (scale == 0.0) {

@@ -98,6 +98,11 @@ class Task {
 /// Starts `work`, which catches what it throws.
 std::unique_ptr<Task> start_task(std::function<void()> work);
 
+/// The pause hook for the AI's settings (ai/pause.hpp, PlanSettings::pause) that lets a task
+/// hand the CPU back between slices; null where tasks have threads of their own.
+using PausePoint = void (*)();
+PausePoint task_pause_point();
+
 /// Calls `frame` until it returns false: a loop on the desktop; on the web, once per animation
 /// frame of the browser, returning at once (the page lives on).
 void run(std::function<bool()> frame);

@@ -11,7 +11,6 @@
 #include <limits>
 #include <vector>
 
-#include "ai/pause.hpp"
 #include "app/platform.hpp"
 #include "app/platform_slices.hpp"
 
@@ -83,7 +82,6 @@ class SlicedTask final : public Task {
   private:
     static void enter(void* arg) {
         auto* task = static_cast<SlicedTask*>(arg);
-        ai::set_pause_hook(&SlicedTask::pause);
         {
             const std::function<void()> work = std::move(task->work_);
             work();
@@ -101,6 +99,10 @@ class SlicedTask final : public Task {
 };
 
 }  // namespace
+
+PausePoint task_pause_point() {
+    return &SlicedTask::pause;
+}
 
 std::unique_ptr<Task> start_task(std::function<void()> work) {
     return std::make_unique<SlicedTask>(std::move(work));

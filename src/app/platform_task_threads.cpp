@@ -30,6 +30,10 @@ std::unique_ptr<Task> start_task(std::function<void()> work) {
     return std::make_unique<ThreadTask>(std::move(work));
 }
 
+PausePoint task_pause_point() {
+    return nullptr;
+}
+
 void run_task_slice() {
     // The tasks run on their threads.
 }

@@ -8,6 +8,7 @@
 
 #include "ai/ai.hpp"
 #include "ai/games.hpp"
+#include "app/platform.hpp"
 #include "game/random_player.hpp"
 
 namespace app {
@@ -44,7 +45,7 @@ std::unique_ptr<game::Player> make_computer(const std::string& kind, std::uint64
     if (kind == "human") return nullptr;
     if (kind == "random") return std::make_unique<game::RandomPlayer>(seed);
     if (const std::optional<int> level = ai_level(kind))
-        return std::make_unique<ai::AiPlayer>(*level, seed, noise);
+        return std::make_unique<ai::AiPlayer>(*level, seed, noise, 2, platform::task_pause_point());
     throw std::invalid_argument("unknown player \"" + kind +
                                 "\" (expected human, random or ai:1 to ai:5)");
 }
@@ -54,7 +55,7 @@ std::optional<game::SnookerPlayer> snooker_computer(const std::string& kind, std
     if (kind == "random") return game::random_snooker_player(seed);
     const std::optional<int> level = ai_level(kind);
     if (!level) return std::nullopt;
-    const ai::PlanSettings settings{*level, noise, 2};
+    const ai::PlanSettings settings{*level, noise, 2, platform::task_pause_point()};
     auto decisions = std::make_shared<std::uint64_t>(0);  // shared by the copies of `decide`
     return game::SnookerPlayer{[settings, seed, decisions](const game::SnookerSession& s) {
                                    return snooker_decision(s, settings,
@@ -68,7 +69,7 @@ std::optional<game::CaromPlayer> carom_computer(const std::string& kind, std::ui
     if (kind == "random") return game::random_carom_player(seed);
     const std::optional<int> level = ai_level(kind);
     if (!level) return std::nullopt;
-    const ai::PlanSettings settings{*level, noise, 2};
+    const ai::PlanSettings settings{*level, noise, 2, platform::task_pause_point()};
     auto decisions = std::make_shared<std::uint64_t>(0);
     return game::CaromPlayer{[settings, seed, decisions](const game::CaromSession& s) {
                                  const auto& c = s.config();

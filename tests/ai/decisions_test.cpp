@@ -169,9 +169,7 @@ TEST(Decisions, APauseHookChangesNothing) {
     for (int workers : {1, 2}) {
         const ai::Plan plain = ai::plan(pos, {5, 1.0, workers}, 7);
         pauses = 0;
-        EXPECT_EQ(ai::set_pause_hook(&count_pause), nullptr);
-        const ai::Plan paused = ai::plan(pos, {5, 1.0, workers}, 7);
-        EXPECT_EQ(ai::set_pause_hook(nullptr), &count_pause);
+        const ai::Plan paused = ai::plan(pos, {5, 1.0, workers, &count_pause}, 7);
         expect_same(plain.decision, paused.decision);
         EXPECT_EQ(plain.simulations, paused.simulations);
         EXPECT_TRUE(same_bits(plain.expected_value, paused.expected_value));

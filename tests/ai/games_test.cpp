@@ -207,11 +207,9 @@ TEST(GamesPauseHook, ChangesNoPlan) {
         cpos.state.positions[b.id] = b.pos;
     const SnookerPlan a = plan_snooker(pos, {5, 1.0, 1}, 42);
     const CaromPlan c = plan_three_cushion(cpos, {5, 1.0, 1}, 11);
-    ai::set_pause_hook(&count_pause);
-    const SnookerPlan b = plan_snooker(pos, {5, 1.0, 1}, 42);
+    const SnookerPlan b = plan_snooker(pos, {5, 1.0, 1, &count_pause}, 42);
     const int snooker_pauses = pauses;
-    const CaromPlan d = plan_three_cushion(cpos, {5, 1.0, 1}, 11);
-    ai::set_pause_hook(nullptr);
+    const CaromPlan d = plan_three_cushion(cpos, {5, 1.0, 1, &count_pause}, 11);
     EXPECT_TRUE(same_stroke(a.stroke, b.stroke));
     EXPECT_EQ(a.cue_pos, b.cue_pos);
     EXPECT_EQ(a.nominated, b.nominated);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "ai/internal/candidates.hpp"
+#include "ai/internal/parallel.hpp"
 #include "ai/internal/position.hpp"
 #include "ai/internal/private.hpp"
 #include "physics/stroke.hpp"
@@ -91,21 +92,23 @@ class Evaluator {
 };
 
 /// Scores each candidate of `which` in `candidates` with the draws [first, first + count),
-/// adding to `scores` (running means); `workers` threads. Returns the simulations run.
+/// adding to `scores` (running means); `workers` threads (and pause hook). Returns the simulations
+/// run.
 std::int64_t score_under_noise(const Evaluator& eval, const std::vector<Candidate>& candidates,
                                const std::vector<std::size_t>& which,
                                const std::vector<NoiseDraw>& draws, std::size_t first,
-                               std::size_t count, std::vector<Score>& scores, int workers);
+                               std::size_t count, std::vector<Score>& scores, Workers workers);
 
 /// Scores each candidate of `which` two plies deep (Evaluator::deep_trial) with the draws
 /// [first, first + count), which `scores` must already hold one ply deep: each score's value is
 /// its one-ply mean moved by the mean difference between its two- and one-ply values on the
 /// draws valued deeper so far (a control variate: the outcome the two share cancels, and the
 /// difference is far less noisy than either). A draw beyond the score's one-ply draws adds its
-/// one-ply value to the one-ply mean too. `workers` threads. Returns the simulations run.
+/// one-ply value to the one-ply mean too. `workers` threads (and pause hook). Returns the
+/// simulations run.
 std::int64_t score_deep(const Evaluator& eval, const std::vector<Candidate>& candidates,
                         const std::vector<std::size_t>& which, const std::vector<NoiseDraw>& draws,
                         std::size_t first, std::size_t count, const Effort& effort,
-                        std::vector<Score>& scores, int workers);
+                        std::vector<Score>& scores, Workers workers);
 
 }  // namespace ai

@@ -60,6 +60,7 @@ std::optional<Candidate> centred(const Evaluator& eval, const Candidate& c,
 inline constexpr std::array<double, 3> kick_speed_factors{1.0, 0.8, 1.25};
 std::vector<Candidate> centred_kicks(const Evaluator& eval, const std::vector<Candidate>& kicks,
                                      const std::vector<Score>& nominal, std::size_t count,
-                                     double max_raise_deg, std::int64_t& simulations, int workers);
+                                     double max_raise_deg, std::int64_t& simulations,
+                                     Workers workers);
 
 }  // namespace ai
