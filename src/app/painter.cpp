@@ -42,10 +42,9 @@ void Painter::draw_table(const SceneFrame& scene, const render::Camera& camera,
     if (camera_moving && !moving_)
         moving_ = std::make_unique<render::OffscreenTarget>(view_width(), view_height(), 1);
     render::OffscreenTarget& target = camera_moving ? *moving_ : *view_;
-    target.bind();
     render::FrameView view = scene.view(camera);
     view.camera_moving = camera_moving;
-    renderer_.draw(view, view_width(), view_height());
+    renderer_.draw(view, target);
     target.resolve();  // leaves the resolved table image bound for reading
 }
 
