@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include <algorithm>
 #include <cmath>
@@ -433,7 +434,9 @@ void menu_dialog(const Settings& settings, PanelState& st, PanelActions& out) {
 
 // A finger drags the scrolling part of the panel (ImGui scrolls by the wheel and the bar only).
 void drag_to_scroll() {
-    if (ImGui::IsWindowHovered() && !ImGui::IsAnyItemActive() &&
+    // A press on no control makes the window itself active (ImGui's move, refused: NoMove).
+    const ImGuiID active = ImGui::GetActiveID();
+    if (ImGui::IsWindowHovered() && (active == 0 || active == ImGui::GetCurrentWindow()->MoveId) &&
         ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f))
         ImGui::SetScrollY(ImGui::GetScrollY() - ImGui::GetIO().MouseDelta.y);
 }
@@ -455,7 +458,12 @@ void panel_at_the_right(const Controller& c, const Settings& settings, PanelStat
 // then the stroke's and the game's controls scrolling; Power, Strike, Hint, Change View and
 // Skip or Replay at the foot, under the thumb.
 void panel_below(const Controller& c, const Settings& settings, PanelState& st, PanelActions& out) {
-    ImGui::BeginChild("##middle", ImVec2(0.0f, -footer_height(3)));
+    // The foot's controls are twice as padded: a thumb's target, about 40 px tall on a phone.
+    const ImVec2 pad = ImGui::GetStyle().FramePadding;
+    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(pad.x, 2.0f * pad.y));
+    const float foot = footer_height(3);
+    ImGui::PopStyleVar();
+    ImGui::BeginChild("##middle", ImVec2(0.0f, -foot));
     drag_to_scroll();
     information_bar(c, st, out);
     stroke_controls(c, st, out);
@@ -467,6 +475,7 @@ void panel_below(const Controller& c, const Settings& settings, PanelState& st, 
     new_game_and_controls(settings, st);
     ImGui::EndChild();
     ImGui::Separator();
+    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(pad.x, 2.0f * pad.y));
     power_slider(c, out, true);
     strike_and_hint(c, st, out);
     const float half = (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x) / 2;
@@ -474,6 +483,7 @@ void panel_below(const Controller& c, const Settings& settings, PanelState& st, 
     remember(st, "Change View");
     ImGui::SameLine();
     skip_or_replay(c, st, out, half);
+    ImGui::PopStyleVar();
 }
 
 }  // namespace

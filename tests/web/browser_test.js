@@ -343,8 +343,19 @@ async function portraitTouch(browser, base, errors) {
   await sleep(300);
   check((await g.read()).shots === 0, `a finger drags the aim round without striking (${heading0} -> ${s.heading_deg} deg)`);
   const w = s.widgets.Strike.map((v) => v / dpr);
-  check(w[1] >= vh && w[3] <= 844 && w[3] - w[1] >= 24 && w[2] - w[0] >= 150,
+  check(w[1] >= vh && w[3] <= 844 && w[3] - w[1] >= 36 && w[2] - w[0] >= 150,
         `the Strike button is in the panel under the table, big enough to tap (${w.map(Math.round)} CSS px)`);
+  // A finger drags the panel's middle (information, spin, elevation, the game's buttons) up.
+  const restart0 = s.widgets.Restart[1] / dpr;
+  const middleY = vh + (w[1] - vh) * 0.6;
+  await page.touchscreen.touchStart(320, middleY);  // right of the tip picture: no control there
+  for (let k = 1; k <= 8; ++k) {
+    await page.touchscreen.touchMove(320, middleY - 10 * k);
+    await sleep(30);
+  }
+  await page.touchscreen.touchEnd();
+  s = await g.wait((s) => s.widgets.Restart[1] / dpr < restart0 - 40, 10, 'the panel to scroll');
+  check(s.shots === 0, `a finger scrolls the panel under the table (Restart from y ${Math.round(restart0)} to ${Math.round(s.widgets.Restart[1] / dpr)} CSS px)`);
   await g.screenshot('10-portrait-aimed.png');
   const aimed = s;
   await page.touchscreen.tap((w[0] + w[2]) / 2, (w[1] + w[3]) / 2);
