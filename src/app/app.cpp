@@ -57,6 +57,10 @@ class WindowLoop {
         return std::chrono::steady_clock::now() - last_motion_ >= std::chrono::milliseconds(200);
     }
     bool handle_events();
+    /// The mouse is over the table view (the top left of the window), not the panel.
+    bool over_table() const {
+        return mouse_x_ < painter_->view_width() && mouse_y_ < painter_->view_height();
+    }
     void on_event(const platform::Event& e);
     bool update();
     void draw();
@@ -92,8 +96,8 @@ WindowLoop::WindowLoop(GameSetup setup, std::unique_ptr<platform::Window> window
       input_(t_.controller, t_.rig,
              [this](double x, double y) {
                  const double R = t_.controller.session().config().params.ball_radius;
-                 return table_point(t_.last_camera, painter_->view_width(), painter_->height(), x,
-                                    y, R);
+                 return table_point(t_.last_camera, painter_->view_width(), painter_->view_height(),
+                                    x, y, R);
              }),
       sound_serial_(t_.controller.shot_serial()),
       saved_at_(t_.controller.shot_serial(), t_.controller.session().game_number()) {
@@ -169,7 +173,7 @@ bool WindowLoop::handle_events() {
 void WindowLoop::on_event(const platform::Event& e) {
     using Kind = platform::Event::Kind;
     const bool ui = ImGui::GetIO().WantCaptureMouse;
-    const bool over_panel = mouse_x_ >= painter_->view_width();
+    const bool over_panel = !over_table();
     switch (e.kind) {
         case Kind::quit:
             t_.exit_requested = true;
@@ -187,7 +191,7 @@ void WindowLoop::on_event(const platform::Event& e) {
             const MouseButton b = slot == 0   ? MouseButton::left
                                   : slot == 1 ? MouseButton::right
                                               : MouseButton::middle;
-            if (e.down && !ui && mouse_x_ < painter_->view_width()) input_.press(b, e.x, e.y);
+            if (e.down && !ui && over_table()) input_.press(b, e.x, e.y);
             if (!e.down) input_.release(b, e.x, e.y);
             return;
         }
@@ -243,6 +247,7 @@ PanelLayout WindowLoop::scaled_panel_layout(int w, int h) const {
     PanelLayout layout = panel_layout(static_cast<int>(std::lround(w / ppp)),
                                       static_cast<int>(std::lround(h / ppp)), ui_scale_);
     layout.width = std::round(layout.width * static_cast<float>(ppp));
+    layout.height = std::round(layout.height * static_cast<float>(ppp));
     layout.scale *= static_cast<float>(ppp);
     return layout;
 }
@@ -251,7 +256,7 @@ void WindowLoop::draw() {
     const auto [w, h] = window_->drawable_size();
     const PanelLayout layout = scaled_panel_layout(w, h);
     paint_the_session_table();
-    painter_->resize(w, h, static_cast<int>(layout.width));
+    painter_->resize(w, h, table_view(layout, w, h));
     set_ui_scale(layout.scale);
     window_->new_imgui_frame();
     // ImGui 1.86's SDL backend reads the global mouse state, stale under Xvfb/XTEST: the
@@ -263,9 +268,8 @@ void WindowLoop::draw() {
         mouse_pressed_[i] = false;
     }
     ImGui::NewFrame();
-    const PanelActions actions =
-        draw_panel(t_.controller, t_.setup.settings, t_.panel, static_cast<float>(w),
-                   static_cast<float>(h), layout.width);
+    const PanelActions actions = draw_panel(t_.controller, t_.setup.settings, t_.panel,
+                                            static_cast<float>(w), static_cast<float>(h), layout);
     ImGui::Render();
     t_.apply(actions, window_.get());
     if (!mouse_down_[0] && !mouse_down_[1] && !mouse_down_[2] && !(t_.setup.settings == t_.saved)) {
@@ -273,7 +277,7 @@ void WindowLoop::draw() {
         window_->files_written();
     }
     const float aspect =
-        static_cast<float>(painter_->view_width()) / static_cast<float>(painter_->height());
+        static_cast<float>(painter_->view_width()) / static_cast<float>(painter_->view_height());
     const render::Camera previous = t_.last_camera;
     t_.last_camera = t_.camera(aspect);
     bool camera_moving = t_.rig.animating() || previous.eye != t_.last_camera.eye ||
@@ -303,8 +307,10 @@ void WindowLoop::write_status(const SceneFrame& scene, int w, int h, const Panel
                                 scene.show_aim && scene.aim.illegal,
                                 {w, h},
                                 static_cast<int>(layout.width),
+                                static_cast<int>(layout.height),
+                                {painter_->view_width(), painter_->view_height()},
                                 t_.link_note_shown(),
-                                ball_pixels(t_, painter_->view_width(), painter_->height())}));
+                                ball_pixels(t_, painter_->view_width(), painter_->view_height())}));
 }
 
 }  // namespace

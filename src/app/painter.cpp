@@ -22,31 +22,29 @@ Painter::Painter(const physics::Table& table, double ball_radius, render::GameLo
                  int samples)
     : renderer_(table, ball_radius, with_look(look)), samples_(samples) {}
 
-void Painter::resize(int width, int height, int panel_width) {
+void Painter::resize(int width, int height, ViewSize view) {
     width = std::max(width, 64);
     height = std::max(height, 64);
-    if (view_ && width == width_ && height == height_ && panel_width == panel_) return;
+    view = {std::clamp(view.width, 16, width), std::clamp(view.height, 16, height)};
+    if (view_ && width == width_ && height == height_ && view.width == view_size_.width &&
+        view.height == view_size_.height)
+        return;
     width_ = width;
     height_ = height;
-    panel_ = panel_width;
-    view_ = std::make_unique<render::OffscreenTarget>(view_width(), height_, samples_);
+    view_size_ = view;
+    view_ = std::make_unique<render::OffscreenTarget>(view_width(), view_height(), samples_);
     moving_.reset();
     picture_.reset();
-}
-
-int Painter::view_width() const {
-    return std::max(16, width_ - panel_);
 }
 
 void Painter::draw_table(const SceneFrame& scene, const render::Camera& camera,
                          bool camera_moving) {
     if (camera_moving && !moving_)
-        moving_ = std::make_unique<render::OffscreenTarget>(view_width(), height_, 1);
+        moving_ = std::make_unique<render::OffscreenTarget>(view_width(), view_height(), 1);
     render::OffscreenTarget& target = camera_moving ? *moving_ : *view_;
-    target.bind();
     render::FrameView view = scene.view(camera);
     view.camera_moving = camera_moving;
-    renderer_.draw(view, view_width(), height_);
+    renderer_.draw(view, target);
     target.resolve();  // leaves the resolved table image bound for reading
 }
 
@@ -56,8 +54,9 @@ void Painter::compose(unsigned table_image, ImDrawData* panel) const {
     glViewport(0, 0, width_, height_);
     glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
-    glBlitFramebuffer(0, 0, view_width(), height_, 0, 0, view_width(), height_, GL_COLOR_BUFFER_BIT,
-                      GL_NEAREST);
+    // GL counts rows from the bottom: the view's top left is the window's.
+    glBlitFramebuffer(0, 0, view_width(), view_height(), 0, height_ - view_height(), view_width(),
+                      height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     if (panel) ImGui_ImplOpenGL3_RenderDrawData(panel);
 }
 

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include <algorithm>
 #include <cmath>
@@ -209,18 +210,24 @@ void header(const Controller& c, PanelState& st) {
     ImGui::Separator();
 }
 
-// The original game's controls: Power, Sound, Change View, Restart, Exit.
-void original_controls(const Controller& c, const Settings& settings, PanelState& st,
-                       PanelActions& out) {
-    const game::Session& s = c.session();
+// The Power slider: its label above it, or (`one_row`) beside it.
+void power_slider(const Controller& c, PanelActions& out, bool one_row) {
     float power = static_cast<float>(c.aim().power * 100.0);
+    if (one_row) ImGui::AlignTextToFramePadding();
     ImGui::Text("Power");
+    if (one_row) ImGui::SameLine();
     ImGui::SetNextItemWidth(-1.0f);
     if (ImGui::SliderFloat("##power", &power, 0.0f, 100.0f, "%.0f %%")) out.power = power / 100.0;
+}
+
+void sound_box(const Settings& settings, PanelState& st, PanelActions& out) {
     bool sound = settings.sound;
     if (ImGui::Checkbox("Sound", &sound)) out.sound = sound;
     remember(st, "Sound");
-    if (full_button(st, "Change View")) out.change_view = true;
+}
+
+void restart_and_exit(const Controller& c, PanelState& st, PanelActions& out) {
+    const game::Session& s = c.session();
     const auto [restart, exit] = button_pair(st, "Restart", "Exit");
     if (restart) {
         const bool match = c.snooker() || c.carom();  // a match is never restarted unasked
@@ -230,6 +237,15 @@ void original_controls(const Controller& c, const Settings& settings, PanelState
             st.confirm_restart = true;
     }
     if (exit) out.exit = true;
+}
+
+// The original game's controls: Power, Sound, Change View, Restart, Exit.
+void original_controls(const Controller& c, const Settings& settings, PanelState& st,
+                       PanelActions& out) {
+    power_slider(c, out, false);
+    sound_box(settings, st, out);
+    if (full_button(st, "Change View")) out.change_view = true;
+    restart_and_exit(c, st, out);
 }
 
 // The information bar: whose turn, the groups, the last shot in words; and any pending choice.
@@ -309,19 +325,14 @@ void stroke_controls(const Controller& c, PanelState& st, PanelActions& out) {
     }
 }
 
-// The rows of play_buttons, kept at the panel's foot.
-constexpr int footer_rows = 4;
-
-float footer_height() {
-    return footer_rows * ImGui::GetFrameHeightWithSpacing() + ImGui::GetStyle().ItemSpacing.y;
+// The height of `rows` rows of buttons kept at the panel's foot.
+float footer_height(int rows) {
+    return static_cast<float>(rows) * ImGui::GetFrameHeightWithSpacing() +
+           ImGui::GetStyle().ItemSpacing.y;
 }
 
-// Aim guide, Strike and Hint, Skip or Replay, New Game and Controls: one row each, always in
-// view at the panel's foot.
-void play_buttons(const Controller& c, const Settings& settings, PanelState& st,
-                  PanelActions& out) {
-    ImGui::Separator();
-    if (auto g = aim_guide_combo(st, settings.aim_guide)) out.aim_guide = g;
+// Strike and Hint when the human may strike, else an empty row (the buttons below stay put).
+void strike_and_hint(const Controller& c, PanelState& st, PanelActions& out) {
     const bool choosing = c.snooker() && c.snooker()->phase() == game::MatchPhase::choose;
     const bool shoot = c.human_to_act() && c.session().phase() == game::Phase::shoot && !choosing;
     if (shoot && c.hint_available()) {
@@ -333,25 +344,47 @@ void play_buttons(const Controller& c, const Settings& settings, PanelState& st,
     } else {
         ImGui::Dummy(ImVec2(0.0f, ImGui::GetFrameHeight()));
     }
-    const float half = (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x) / 2;
+}
+
+// Skip while the balls move, Replay after a shot, else room for them; `width` wide.
+void skip_or_replay(const Controller& c, PanelState& st, PanelActions& out, float width) {
     if (c.moving()) {
-        if (ImGui::Button("Skip", ImVec2(half, 0.0f))) out.skip = true;
+        if (ImGui::Button("Skip", ImVec2(width, 0.0f))) out.skip = true;
         remember(st, "Skip");
     } else if (c.playback().has_shot() && !c.busy()) {
-        if (ImGui::Button("Replay", ImVec2(half, 0.0f))) out.replay = true;
+        if (ImGui::Button("Replay", ImVec2(width, 0.0f))) out.replay = true;
         remember(st, "Replay");
     } else {
-        ImGui::Dummy(ImVec2(half, ImGui::GetFrameHeight()));
+        ImGui::Dummy(ImVec2(width, ImGui::GetFrameHeight()));
     }
-    ImGui::SameLine();
+}
+
+void copy_link_button(const Controller& c, PanelState& st, PanelActions& out, float width) {
     // Practice off the pool tables has no rules' position to share (shot_sharing.hpp).
     ImGui::BeginDisabled(c.practicing() && c.look() != render::GameLook::pool);
-    if (ImGui::Button("Copy shot link", ImVec2(half, 0.0f))) out.copy_link = true;
+    if (ImGui::Button("Copy shot link", ImVec2(width, 0.0f))) out.copy_link = true;
     ImGui::EndDisabled();
     remember(st, "Copy shot link");
+}
+
+void new_game_and_controls(const Settings& settings, PanelState& st) {
     const auto [new_game, controls] = button_pair(st, "New Game...", "Controls");
     if (new_game) open_new_game(st, settings);
     if (controls) st.controls_open = true;
+}
+
+// Aim guide, Strike and Hint, Skip or Replay, New Game and Controls: one row each, always in
+// view at the panel's foot.
+void play_buttons(const Controller& c, const Settings& settings, PanelState& st,
+                  PanelActions& out) {
+    ImGui::Separator();
+    if (auto g = aim_guide_combo(st, settings.aim_guide)) out.aim_guide = g;
+    strike_and_hint(c, st, out);
+    const float half = (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x) / 2;
+    skip_or_replay(c, st, out, half);
+    ImGui::SameLine();
+    copy_link_button(c, st, out, half);
+    new_game_and_controls(settings, st);
 }
 
 // The mouse and the keys, in a window of their own so that they never push the buttons away.
@@ -415,26 +448,80 @@ void menu_dialog(const Settings& settings, PanelState& st, PanelActions& out) {
     ImGui::EndPopup();
 }
 
+// A finger drags the scrolling part of the panel (ImGui scrolls by the wheel and the bar only).
+void drag_to_scroll() {
+    // A press on no control makes the window itself active (ImGui's move, refused: NoMove).
+    const ImGuiID active = ImGui::GetActiveID();
+    if (ImGui::IsWindowHovered() && (active == 0 || active == ImGui::GetCurrentWindow()->MoveId) &&
+        ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f))
+        ImGui::SetScrollY(ImGui::GetScrollY() - ImGui::GetIO().MouseDelta.y);
+}
+
+// At the right of the table: the original controls on top, the play buttons at the foot, the
+// information bar and the stroke's controls scrolling between them.
+void panel_at_the_right(const Controller& c, const Settings& settings, PanelState& st,
+                        PanelActions& out) {
+    original_controls(c, settings, st, out);
+    ImGui::BeginChild("##middle", ImVec2(0.0f, -footer_height(4)));
+    drag_to_scroll();
+    information_bar(c, st, out);
+    stroke_controls(c, st, out);
+    ImGui::EndChild();
+    play_buttons(c, settings, st, out);
+}
+
+// Under the table (a tall window): the information bar first, where the eye leaves the table,
+// then the stroke's and the game's controls scrolling; Power, Strike, Hint, Change View and
+// Skip or Replay at the foot, under the thumb.
+void panel_below(const Controller& c, const Settings& settings, PanelState& st, PanelActions& out) {
+    // The foot's controls are twice as padded: a thumb's target, about 40 px tall on a phone.
+    const ImVec2 pad = ImGui::GetStyle().FramePadding;
+    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(pad.x, 2.0f * pad.y));
+    const float foot = footer_height(3);
+    ImGui::PopStyleVar();
+    ImGui::BeginChild("##middle", ImVec2(0.0f, -foot));
+    drag_to_scroll();
+    information_bar(c, st, out);
+    stroke_controls(c, st, out);
+    ImGui::Separator();
+    if (auto g = aim_guide_combo(st, settings.aim_guide)) out.aim_guide = g;
+    sound_box(settings, st, out);
+    copy_link_button(c, st, out, -1.0f);
+    restart_and_exit(c, st, out);
+    new_game_and_controls(settings, st);
+    ImGui::EndChild();
+    ImGui::Separator();
+    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(pad.x, 2.0f * pad.y));
+    power_slider(c, out, true);
+    strike_and_hint(c, st, out);
+    const float half = (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x) / 2;
+    if (ImGui::Button("Change View", ImVec2(half, 0.0f))) out.change_view = true;
+    remember(st, "Change View");
+    ImGui::SameLine();
+    skip_or_replay(c, st, out, half);
+    ImGui::PopStyleVar();
+}
+
 }  // namespace
 
 PanelActions draw_panel(const Controller& c, const Settings& settings, PanelState& st, float width,
-                        float height, float panel_width) {
+                        float height, const PanelLayout& layout) {
     PanelActions out;
     st.widgets.clear();
-    ImGui::SetNextWindowPos(ImVec2(width - panel_width, 0));
-    ImGui::SetNextWindowSize(ImVec2(panel_width, height));
+    const bool below = layout.place == PanelPlace::below;
+    ImGui::SetNextWindowPos(below ? ImVec2(0, height - layout.height)
+                                  : ImVec2(width - layout.width, 0));
+    ImGui::SetNextWindowSize(ImVec2(layout.width, below ? layout.height : height));
     ImGui::Begin("Coolaaber", nullptr,
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                      ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar |
                      ImGuiWindowFlags_NoScrollWithMouse);
     header(c, st);
     scoreboard(c);
-    original_controls(c, settings, st, out);
-    ImGui::BeginChild("##middle", ImVec2(0.0f, -footer_height()));
-    information_bar(c, st, out);
-    stroke_controls(c, st, out);
-    ImGui::EndChild();
-    play_buttons(c, settings, st, out);
+    if (below)
+        panel_below(c, settings, st, out);
+    else
+        panel_at_the_right(c, settings, st, out);
     new_game_dialog(st, out);
     restart_dialog(st, out);
     menu_dialog(settings, st, out);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "app/controller.hpp"
+#include "app/panel_layout.hpp"
 #include "app/settings.hpp"
 #include "rules/snooker.hpp"
 #include "rules/three_cushion.hpp"
@@ -81,11 +82,12 @@ struct PanelState {
     std::map<std::string, std::array<float, 4>> widgets;
 };
 
-/// Draws the panel, `panel_width` wide, at the right edge of a `width` × `height` window: the
+/// Draws the panel where `layout` puts it in a `width` × `height` window: at the right, the
 /// original controls at the top and the play buttons at the bottom always show, the information
-/// bar and the stroke's controls between them scroll when the window is too low. Call between
-/// ImGui::NewFrame() and ImGui::Render().
+/// bar and the stroke's controls between them scroll when the window is too low; below the
+/// table, the information bar heads the scrolling part and Power, Strike, Hint, Change View
+/// and Skip or Replay stay at the foot. Call between ImGui::NewFrame() and ImGui::Render().
 PanelActions draw_panel(const Controller& controller, const Settings& settings, PanelState& state,
-                        float width, float height, float panel_width);
+                        float width, float height, const PanelLayout& layout);
 
 }  // namespace app

@@ -32,7 +32,7 @@ int run_screenshot(const AppOptions& options) {
                         t.controller.session().config().params.ball_radius, t.controller.look());
         const PanelLayout layout =
             panel_layout(w, h, dpi_scale(std::getenv("COOLAABER_UI_SCALE"), 0.0f));
-        painter.resize(w, h, static_cast<int>(layout.width));
+        painter.resize(w, h, table_view(layout, w, h));
         set_ui_scale(layout.scale);
         ImGuiIO& io = ImGui::GetIO();
         io.DisplaySize = ImVec2(static_cast<float>(w), static_cast<float>(h));
@@ -42,11 +42,11 @@ int run_screenshot(const AppOptions& options) {
             ImGui_ImplOpenGL3_NewFrame();
             ImGui::NewFrame();
             (void)draw_panel(t.controller, t.setup.settings, t.panel, static_cast<float>(w),
-                             static_cast<float>(h), layout.width);
+                             static_cast<float>(h), layout);
             ImGui::Render();
         }
         const float aspect =
-            static_cast<float>(painter.view_width()) / static_cast<float>(painter.height());
+            static_cast<float>(painter.view_width()) / static_cast<float>(painter.view_height());
         t.rig.update(10.0);
         t.last_camera = t.camera(aspect);
         painter.draw_table(build_scene(t.controller, t.setup.settings.aim_guide), t.last_camera);

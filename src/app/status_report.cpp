@@ -126,6 +126,8 @@ std::string status_json(const Controller& c, const Settings& s, CameraMode view,
     j["frames"] = frame.frames;
     j["window"] = frame.window;
     j["panel_width"] = frame.panel_width;
+    j["panel_height"] = frame.panel_height;
+    j["table_view"] = frame.table_view;
     j["link_note"] = frame.link_note;
     nlohmann::ordered_json px = nlohmann::ordered_json::object();
     for (const auto& [id, at] : frame.ball_px) px[std::to_string(id)] = at;

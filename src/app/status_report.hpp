@@ -18,7 +18,7 @@ namespace app {
 ///  "info": [lines], "last_shot", "refusal", "winner", "heading_deg", "cue_ball", "balls_on_table",
 ///  "positions": {"id": [x, y]} (exact), "aim_guide_level", "aim_foul", "call": {"ball",
 ///  "pocket"} or null, "guide_end", "widgets", "frames", "drawn", "link_note", "ball_px": {"id":
-///  [x, y]}, "practice"}
+///  [x, y]}, "practice", "panel_height", "table_view": [w, h]}
 /// What the last frame showed, beside the controller's state.
 struct FrameFacts {
     std::map<std::string, std::array<float, 4>> widgets;  ///< PanelState::widgets
@@ -30,7 +30,9 @@ struct FrameFacts {
     bool aim_illegal = false;         ///< the guide was drawn red (a foul as aimed)
     std::array<int, 2> window{0, 0};  ///< the window's size (unit: px)
     int panel_width = 0;              ///< (unit: px)
-    std::string link_note;            ///< the shot link line in the information bar, if shown
+    int panel_height = 0;             ///< below the table; 0 at the right (unit: px)
+    std::array<int, 2> table_view{0, 0};  ///< the table view at the top left (unit: px)
+    std::string link_note;                ///< the shot link line in the information bar, if shown
     std::map<int, std::array<double, 2>> ball_px;  ///< where each ball is seen (unit: px)
 };
 

@@ -29,12 +29,16 @@ Camera overhead_camera(const physics::Table& table, float aspect) {
     Camera c;
     c.fovy_deg = 36.0f;
     const float t = std::tan(glm::radians(c.fovy_deg) / 2);
+    // A tall view turns the table a quarter: the long side up the screen, the head string
+    // (the break) at the bottom, nearer the player, the tray at the right.
+    const bool tall = aspect < 1.0f;
+    const float across = tall ? half_y : half_x, up_down = tall ? half_x : half_y;
     // Distance to the rail top so that both half extents fit.
-    const float d = std::max(half_y / t, half_x / (t * aspect));
+    const float d = std::max(up_down / t, across / (t * aspect));
     const glm::vec3 centre{static_cast<float>(table.length()) / 2, (y0 + y1) / 2, 0.0f};
     c.target = centre;
     c.eye = centre + glm::vec3(0, 0, d + dims.rail_height);
-    c.up = {0, 1, 0};
+    c.up = tall ? glm::vec3{1, 0, 0} : glm::vec3{0, 1, 0};
     c.near_m = std::max(0.05f, d * 0.5f);
     c.far_m = d + 3.0f;
     return c;

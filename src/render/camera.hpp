@@ -21,8 +21,8 @@ struct Camera {
 };
 
 /// The overhead camera: straight down on the whole table (rails and the ball-return tray
-/// along the south side included), long side horizontal, as close as the aspect (width /
-/// height) allows.
+/// along the south side included), as close as the aspect (width / height) allows; the long
+/// side horizontal, or in a tall view (aspect < 1) vertical, the head end at the bottom.
 Camera overhead_camera(const physics::Table& table, float aspect);
 
 /// What the cue-ball view is asked for: the player's zoom (distance, height) and the cue.

@@ -213,6 +213,9 @@ struct Renderer::Impl {
     glm::ivec2 small_size{0};
     std::vector<float> last_view;
     MovingScale moving_scale{1.0f, 1.0f, 0.0};  // set from the settings by the constructor
+    /// While draw(frame, target) runs: the target's samples (a 24-bit depth renderbuffer, as
+    /// every OffscreenTarget has), so that use_cache need not ask the GL; 0: unknown.
+    int known_samples = 0;
 
     // Construction, in order.
     void build_hole_grid();
@@ -447,14 +450,17 @@ bool Renderer::Impl::use_cache(const FrameView& frame, int width, int height,
     GLint target = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
     if (target == 0) return false;
-    GLint type = GL_NONE, depth_bits = 0, samples = 0;
-    glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
-                                          GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
-    if (type != GL_RENDERBUFFER) return false;
-    glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
-                                          GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &depth_bits);
-    glGetIntegerv(GL_SAMPLES, &samples);
-    if (depth_bits != 24) return false;
+    GLint samples = known_samples > 1 ? known_samples : 0;  // GL_SAMPLES says 0 for one
+    if (known_samples == 0) {
+        GLint type = GL_NONE, depth_bits = 0;
+        glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
+                                              GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+        if (type != GL_RENDERBUFFER) return false;
+        glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
+                                              GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &depth_bits);
+        glGetIntegerv(GL_SAMPLES, &samples);
+        if (depth_bits != 24) return false;
+    }
     // OpenGL ES 3 (WebGL 2) blits into no multisampled framebuffer: the table is drawn afresh.
     if (kPlatformGlsl == GlslTarget::es300 && samples > 1) return false;
     std::vector<float> key = {static_cast<float>(width), static_cast<float>(height),
@@ -670,6 +676,13 @@ void Renderer::draw(const FrameView& frame, int width, int height) {
     m.moving_scale.record(
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
             .count());
+}
+
+void Renderer::draw(const FrameView& frame, OffscreenTarget& target) {
+    target.bind();
+    impl_->known_samples = target.samples();
+    draw(frame, target.width(), target.height());
+    impl_->known_samples = 0;
 }
 
 // The passes of one frame into the bound framebuffer's (0, 0, width, height).
@@ -978,13 +991,15 @@ OffscreenTarget::OffscreenTarget(int width, int height, int samples)
     GLint max_samples = 1;
     glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
     samples_ = std::max(1, std::min(samples, static_cast<int>(max_samples)));
-    glGenFramebuffers(1, &resolve_fbo_);
-    glGenRenderbuffers(1, &resolve_colour_);
-    glBindRenderbuffer(GL_RENDERBUFFER, resolve_colour_);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
-    glBindFramebuffer(GL_FRAMEBUFFER, resolve_fbo_);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
-                              resolve_colour_);
+    if (samples_ > 1) {  // one sample is read where it was drawn
+        glGenFramebuffers(1, &resolve_fbo_);
+        glGenRenderbuffers(1, &resolve_colour_);
+        glBindRenderbuffer(GL_RENDERBUFFER, resolve_colour_);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+        glBindFramebuffer(GL_FRAMEBUFFER, resolve_fbo_);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+                                  resolve_colour_);
+    }
 
     glGenFramebuffers(1, &draw_fbo_);
     glGenRenderbuffers(1, &draw_colour_);
@@ -1016,6 +1031,11 @@ void OffscreenTarget::bind() {
 }
 
 void OffscreenTarget::resolve() {
+    // A single-sampled image needs no copy (a whole-view blit a frame, dear on a CPU renderer).
+    if (samples_ <= 1) {
+        glBindFramebuffer(GL_FRAMEBUFFER, draw_fbo_);
+        return;
+    }
     glBindFramebuffer(GL_READ_FRAMEBUFFER, draw_fbo_);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo_);
     glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT,

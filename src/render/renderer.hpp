@@ -126,6 +126,8 @@ glm::vec3 ball_colour(int id, GameLook look);
 BallView ball_view(const physics::BallState& state, double ball_radius,
                    const glm::dquat& orientation);
 
+class OffscreenTarget;
+
 class Renderer {
   public:
     Renderer(const physics::Table& table, double ball_radius, RenderSettings settings = {});
@@ -135,6 +137,9 @@ class Renderer {
 
     /// Clears and draws a frame into the bound framebuffer's (0, 0, width, height) viewport.
     void draw(const FrameView& frame, int width, int height);
+    /// The same into `target`, which it binds; the table cache then asks the GL nothing about
+    /// the framebuffer (under WebGL each such question waits for the GPU process to catch up).
+    void draw(const FrameView& frame, OffscreenTarget& target);
 
     /// The scale the next moving frame is drawn at (RenderSettings::moving_scale_lowest).
     float moving_scale() const;
@@ -155,7 +160,8 @@ class OffscreenTarget {
     OffscreenTarget& operator=(const OffscreenTarget&) = delete;
     /// Binds the framebuffer to draw into.
     void bind();
-    /// Resolves the samples and binds the result for reading.
+    /// Resolves the samples and binds the result for reading (one sample: binds the image
+    /// drawn, no copy).
     void resolve();
     int width() const { return width_; }
     int height() const { return height_; }

@@ -375,7 +375,8 @@ def guide_marks(exe, work):
 
 def resize(exe, work):
     """The panel is laid out for the window: every control stays in view and the table keeps
-    most of the width, from 1280x720 down to 640x480; the Controls help fits too."""
+    most of the width, from 1280x720 down to 640x480; the Controls help fits too; in a tall
+    window the panel goes below the table."""
     g = Game(exe, work, "--game", "8ball", "--seed", "2")
     controls = ["Sound", "Change View", "Restart", "Exit", "Aim guide level", "Strike", "Hint", "New Game...",
                 "Controls"]
@@ -403,6 +404,18 @@ def resize(exe, work):
                 check(g.read()["shots"] == 0 and not g.read()["moving"], "Space does not strike while a dialog is open")
                 g.click_widget("Close")
                 g.wait(lambda s: "Close" not in s["widgets"], 10, "the help closed")
+        # A tall window: the panel below the table, full width, its foot in view.
+        w, h = 560, 700
+        g.xdo("windowsize", "--sync", g.window, str(w), str(h))
+        s = g.wait(lambda s: s["window"] == [w, h] and "Strike" in s["widgets"], 10, f"the window at {w}x{h}")
+        time.sleep(0.3)
+        s = g.wait(lambda s: True, 1, "the status")
+        check(s["panel_width"] == w and s["table_view"] == [w, h - s["panel_height"]] and s["panel_height"] < h / 2,
+              f"{w}x{h}: the panel below the table ({s['panel_height']} px), the table above ({s['table_view']})")
+        foot = ["Strike", "Hint", "Change View"]
+        inside = [k for k in foot if s["widgets"][k][1] >= h - s["panel_height"] and s["widgets"][k][3] <= h]
+        check(inside == foot, f"{w}x{h}: Strike, Hint and Change View in view under the table")
+        g.screenshot(f"window-{w}x{h}.png")
     finally:
         g.close()
 

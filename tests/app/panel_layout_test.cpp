@@ -12,12 +12,45 @@ TEST(PanelLayout, GrowsAndShrinksWithTheWindowAndTheTableKeepsMostOfIt) {
     const app::PanelLayout big = app::panel_layout(1920, 1080);
     EXPECT_EQ(big.width, 450.0f);
     EXPECT_EQ(big.scale, 1.5f);
-    for (auto [w, h] : {std::pair{800, 600}, {640, 480}, {320, 240}, {2560, 600}, {700, 1400}}) {
+    for (auto [w, h] : {std::pair{800, 600}, {640, 480}, {320, 240}, {2560, 600}, {700, 700}}) {
         const app::PanelLayout p = app::panel_layout(w, h);
+        EXPECT_EQ(p.place, app::PanelPlace::right) << w << "x" << h;
         EXPECT_LE(p.width, 0.4f * static_cast<float>(w)) << w << "x" << h;
         EXPECT_GE(p.scale, 0.3f) << w << "x" << h;
         EXPECT_LE(p.scale * 300.0f, p.width * 1.1f + 0.5f) << "the text fits the panel";
     }
+}
+
+TEST(PanelLayout, ATallWindowHasThePanelBelowTheTableFullWidth) {
+    const app::PanelLayout p = app::panel_layout(720, 1280);
+    EXPECT_EQ(p.place, app::PanelPlace::below);
+    EXPECT_EQ(p.width, 720.0f);
+    EXPECT_EQ(p.height, 576.0f);  // 45 %
+    EXPECT_EQ(p.scale, 1.0f);     // as a 1280×720 window's panel
+    const app::ViewSize v = app::table_view(p, 720, 1280);
+    EXPECT_EQ(v.width, 720);
+    EXPECT_EQ(v.height, 704);
+    // A phone upright, 390×844 CSS px, with a finger (1.5): a 17 px font, not squeezed.
+    const app::PanelLayout phone = app::panel_layout(390, 844, 1.5f);
+    EXPECT_EQ(phone.place, app::PanelPlace::below);
+    EXPECT_EQ(phone.width, 390.0f);
+    EXPECT_NEAR(phone.scale * 15.0f, 16.9f, 0.1f);
+    EXPECT_EQ(app::table_view(phone, 390, 844).height, 844 - static_cast<int>(phone.height));
+    for (auto [w, h] : {std::pair{320, 480}, {240, 1000}, {1000, 1001}, {1440, 2560}}) {
+        const app::PanelLayout q = app::panel_layout(w, h, 2.0f);
+        EXPECT_EQ(q.place, app::PanelPlace::below) << w << "x" << h;
+        EXPECT_EQ(q.width, static_cast<float>(w));
+        EXPECT_LE(q.scale * 300.0f, q.width * 1.1f + 0.5f) << "the text fits the panel";
+        EXPECT_GE(app::table_view(q, w, h).height, h / 2) << "the table keeps more than half";
+    }
+}
+
+TEST(PanelLayout, AWideWindowKeepsThePanelAtTheRightFullHeight) {
+    const app::PanelLayout p = app::panel_layout(1280, 720);
+    const app::ViewSize v = app::table_view(p, 1280, 720);
+    EXPECT_EQ(p.height, 0.0f);
+    EXPECT_EQ(v.width, 980);
+    EXPECT_EQ(v.height, 720);
 }
 
 TEST(PanelLayout, HiDpiDisplaysScaleThePanel) {

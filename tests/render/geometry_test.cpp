@@ -196,10 +196,27 @@ TEST(Cameras, LerpRunsFromOneCameraToTheOther) {
     EXPECT_NEAR(glm::length(render::lerp(a, b, 2.0f).eye - b.eye), 0.0f, 1e-4f);
 }
 
+TEST(Cameras, OverheadTurnsTheTableUpright_InATallView) {
+    const physics::Table table = physics::build_table(*physics::table_preset("9ft"));
+    const float aspect = 390.0f / 464.0f;  // a phone upright, the panel below
+    const render::Camera c = render::overhead_camera(table, aspect);
+    const glm::mat4 vp = c.projection(aspect) * c.view();
+    auto seen = [&](physics::Vec2 p) {
+        const glm::vec4 clip =
+            vp * glm::vec4(static_cast<float>(p.x), static_cast<float>(p.y), 0.0f, 1.0f);
+        return glm::vec2(clip.x / clip.w, clip.y / clip.w);
+    };
+    const glm::vec2 head = seen(table.head_spot()), foot = seen(table.foot_spot());
+    EXPECT_NEAR(head.x, foot.x, 1e-4f);  // the long side vertical
+    EXPECT_LT(head.y, foot.y);           // the head end (the break) at the bottom
+    // It fills the view's height better than the table lying across it would.
+    EXPECT_GT(foot.y - head.y, 0.8f);
+}
+
 TEST(Cameras, OverheadShowsTheWholeTableAndTheTray) {
     const physics::Table table = physics::build_table(*physics::table_preset("9ft"));
     const double R = physics::Params{}.ball_radius;
-    for (float aspect : {16.0f / 9.0f, 4.0f / 3.0f, 2.0f}) {
+    for (float aspect : {16.0f / 9.0f, 4.0f / 3.0f, 2.0f, 0.84f, 9.0f / 16.0f}) {
         const render::Camera c = render::overhead_camera(table, aspect);
         const glm::mat4 vp = c.projection(aspect) * c.view();
         const render::TableDims d = render::table_dims(table);

@@ -303,6 +303,74 @@ async function touch(browser, base, errors) {
   await page.close();
 }
 
+// A phone upright (390×844 CSS px at 3 device pixels each, touch): the table above, upright,
+// the panel below it full width; a finger moves the ball in hand where it points and drags the
+// aim round; Strike, at the panel's foot, plays the shot and the balls move.
+async function portraitTouch(browser, base, errors) {
+  const page = await browser.newPage();
+  const dpr = 3;
+  await page.setViewport({width: 390, height: 844, isMobile: true, hasTouch: true, deviceScaleFactor: dpr});
+  const {g} = await open(browser, `${base}?status=1&seed=5&game=9ball`, errors, page, false);
+  let s = await g.wait((s) => s.phase === 'shoot' && !s.busy && 'Strike' in s.widgets, 30, 'the break');
+  await g.screenshot('9-portrait-rack.png');
+  const [vw, vh] = s.table_view.map((v) => v / dpr);
+  check(s.window[0] === 390 * dpr && vw === 390 && s.panel_height > 0 && vh + s.panel_height / dpr === 844,
+        `upright, the table view (${vw}x${vh} CSS px) is above the panel (${s.panel_height / dpr} CSS px tall, full width)`);
+  const cue = s.ball_px['0'].map((v) => v / dpr), rack = s.ball_px['9'].map((v) => v / dpr);
+  check(cue[1] > rack[1] && Math.abs(cue[0] - rack[0]) < 20 && cue[1] < vh && rack[1] > 0,
+        `the table stands upright in the view, the break from the bottom (cue ball at ${cue.map(Math.round)}, the 9 at ${rack.map(Math.round)})`);
+  // The ball in hand follows the finger: 30 CSS px to the left and back down the screen.
+  const before = s.cue_ball;
+  await page.touchscreen.touchStart(cue[0], cue[1]);
+  for (let k = 1; k <= 6; ++k) {
+    await page.touchscreen.touchMove(cue[0] - 5 * k, cue[1] + 2 * k);
+    await sleep(40);
+  }
+  await page.touchscreen.touchEnd();
+  s = await g.wait((s) => s.cue_ball && s.cue_ball[1] !== before[1], 10, 'the ball in hand to move');
+  const put = s.ball_px['0'].map((v) => v / dpr);
+  check(Math.hypot(put[0] - (cue[0] - 30), put[1] - (cue[1] + 12)) < 3 && s.cue_ball[1] > before[1],
+        `a finger moves the ball in hand to where it points (${put.map(Math.round)} CSS px, north on the table is left on the screen)`);
+  const heading0 = s.heading_deg;
+  const y = vh * 0.35;  // clear of the ball in hand
+  await page.touchscreen.touchStart(150, y);
+  for (let x = 154; x <= 190; x += 6) {
+    await page.touchscreen.touchMove(x, y);
+    await sleep(30);
+  }
+  await page.touchscreen.touchEnd();
+  s = await g.wait((s) => Math.abs(s.heading_deg - heading0) > 1, 10, 'the aim to turn');
+  await sleep(300);
+  check((await g.read()).shots === 0, `a finger drags the aim round without striking (${heading0} -> ${s.heading_deg} deg)`);
+  const w = s.widgets.Strike.map((v) => v / dpr);
+  check(w[1] >= vh && w[3] <= 844 && w[3] - w[1] >= 36 && w[2] - w[0] >= 150,
+        `the Strike button is in the panel under the table, big enough to tap (${w.map(Math.round)} CSS px)`);
+  // A finger drags the panel's middle (information, spin, elevation, the game's buttons) up.
+  const restart0 = s.widgets.Restart[1] / dpr;
+  const middleY = vh + (w[1] - vh) * 0.6;
+  await page.touchscreen.touchStart(320, middleY);  // right of the tip picture: no control there
+  for (let k = 1; k <= 8; ++k) {
+    await page.touchscreen.touchMove(320, middleY - 10 * k);
+    await sleep(30);
+  }
+  await page.touchscreen.touchEnd();
+  s = await g.wait((s) => s.widgets.Restart[1] / dpr < restart0 - 40, 10, 'the panel to scroll');
+  check(s.shots === 0, `a finger scrolls the panel under the table (Restart from y ${Math.round(restart0)} to ${Math.round(s.widgets.Restart[1] / dpr)} CSS px)`);
+  await g.screenshot('10-portrait-aimed.png');
+  const aimed = s;
+  await page.touchscreen.tap((w[0] + w[2]) / 2, (w[1] + w[3]) / 2);
+  s = await g.wait((s) => s.shots === 1 && s.moving, 10, 'the strike');
+  await sleep(400);
+  await g.screenshot('11-portrait-moving.png');
+  s = await g.wait((s) => !s.moving && !s.busy, 90, 'the balls to stop');
+  const moved = Object.keys(aimed.positions).filter((id) => !(id in s.positions) ||
+      Math.hypot(s.positions[id][0] - aimed.positions[id][0], s.positions[id][1] - aimed.positions[id][1]) > 0.01);
+  check(moved.length >= 5 && s.last_shot !== '',
+        `tapping Strike plays the shot: ${moved.length} balls moved (${s.last_shot})`);
+  await g.screenshot('12-portrait-after-break.png');
+  await page.close();
+}
+
 // A host without the two headers: the service worker adds them (one reload), and keeps the game
 // for offline play.
 async function withoutHeaders(browser, errors) {
@@ -439,6 +507,7 @@ async function withoutThreads(browser, isolatedUrl, errors) {
     if (run('resume')) await resumeAndLinks(browser, url, errors);
     if (run('computer')) await computerGame(browser, url, errors);
     if (run('touch')) await touch(browser, url, errors);
+    if (run('portrait')) await portraitTouch(browser, url, errors);
     if (run('headers')) await withoutHeaders(browser, errors);
     if (run('nothreads')) await withoutThreads(browser, url, errors);
     check(errors.length === 0, 'no console errors');
