@@ -28,6 +28,9 @@ int run_screenshot(const AppOptions& options) {
         Table t(std::move(*setup));
         create_imgui();
         ImGui_ImplOpenGL3_Init("#version 330 core");
+        // The backend's GL objects first, as in the window's loop: made after the painter's,
+        // the panel came out empty.
+        ImGui_ImplOpenGL3_NewFrame();
         Painter painter(t.controller.session().table(),
                         t.controller.session().config().params.ball_radius, t.controller.look());
         const PanelLayout layout =

@@ -739,11 +739,27 @@ def practice_tables(exe, work):
         g.close()
 
 
+def headless_screenshot(exe, work):
+    """--screenshot FILE draws the game's first frame without a window: the table and the whole
+    panel (its text and buttons, not an empty panel), for a pool and a snooker table."""
+    os.makedirs(work, exist_ok=True)
+    for game in ("9ball", "snooker"):
+        png = os.path.join(work, f"screenshot-{game}.png")
+        p = subprocess.run([exe, "--game", game, "--screenshot", png], capture_output=True, text=True,
+                           timeout=60, env=dict(os.environ, XDG_CONFIG_HOME=os.path.join(work, "config"),
+                                                XDG_DATA_HOME=os.path.join(work, "data")))
+        check(p.returncode == 0 and os.path.exists(png), f"--screenshot wrote {png} ({p.stderr.strip()!r})")
+        spread = subprocess.run(["convert", png, "-crop", "300x720+980+0", "-colorspace", "gray",
+                                 "-format", "%[fx:standard_deviation]", "info:"],
+                                capture_output=True, text=True, check=True).stdout
+        check(float(spread) > 0.08, f"the panel of {game} shows its text and buttons (grey spread {spread})")
+
+
 if __name__ == "__main__":
     test, exe, work = sys.argv[1], sys.argv[2], sys.argv[3]
     {"controls": controls, "game": whole_game, "hinted": hinted_game, "display": no_display,
      "choice": no_choice_after_scratch, "kitchen": kitchen_foul, "guide": guide_marks,
      "resize": resize, "shot": shared_shot,
-     "practice": practice, "snooker": snooker, "three_cushion": three_cushion,
+     "practice": practice, "screenshot": headless_screenshot, "snooker": snooker, "three_cushion": three_cushion,
      "practice_tables": practice_tables}[test](exe, work)
     print("passed")
