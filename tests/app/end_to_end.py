@@ -670,10 +670,9 @@ def practice_tables(exe, work):
         g.click_widget("Start")
         s = g.wait(lambda s: s["practice"] and s["look"] == "snooker" and not s["busy"], 30, "snooker practice")
         check(s["balls_on_table"] == 21 and s["match"] is None, f"the snooker set-up, no match: {s['balls_on_table']}")
-        # The status of the frame that started practice lists the panel drawn before it: wait for the next.
-        started = s["frames"]
-        s = g.wait(lambda s: s["frames"] > started, 10, "a frame of snooker practice")
-        check("Hint" not in s["widgets"] and "Strike" in s["widgets"], "Strike without Hint on the snooker table")
+        # The status of the frame that started practice lists the panel drawn before it.
+        s = g.wait(lambda s: "Hint" not in s["widgets"] and "Strike" in s["widgets"], 10,
+                   "Strike without Hint on the snooker table")
         time.sleep(0.5)
         g.screenshot("practice-snooker-1-setup.png")
         red = s["ball_px"]["3"]
