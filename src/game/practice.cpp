@@ -5,8 +5,10 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "game/carom_session.hpp"
 #include "game/json_field.hpp"
 #include "game/session.hpp"
+#include "game/snooker_session.hpp"
 #include "game/state_json.hpp"
 #include "physics/layout.hpp"
 #include "physics/markings.hpp"
@@ -16,8 +18,6 @@
 namespace game {
 
 namespace {
-
-constexpr const char* snooker_colours[] = {"yellow", "green", "brown", "blue", "pink", "black"};
 
 physics::Table checked_table(physics::RackType game, const physics::TableSpec& spec,
                              double ball_radius) {
@@ -78,13 +78,9 @@ Practice Practice::on_own_table(physics::RackType game, std::uint64_t seed) {
 }
 
 std::string Practice::ball_name(int id) const {
-    if (game_ == physics::RackType::three_cushion)
-        return id == physics::carom_ball::white    ? "white"
-               : id == physics::carom_ball::yellow ? "yellow"
-                                                   : "red";
+    if (game_ == physics::RackType::three_cushion) return carom_ball_name(id);
     if (id == 0) return "cue ball";
-    if (game_ == physics::RackType::snooker)
-        return physics::is_red(id) ? "red" : snooker_colours[id - physics::snooker_ball::yellow];
+    if (game_ == physics::RackType::snooker) return snooker_ball_name(id);
     return std::to_string(id);
 }
 
