@@ -12,8 +12,8 @@ game::SharedShot shared(const game::Config& c, rules::GameState state, physics::
     return {c.game, c.options, c.table, c.params, std::move(state), stroke};
 }
 
-ShotToShare none(game::MatchPhase phase) {
-    return {std::nullopt, phase == game::MatchPhase::place_cue_ball
+ShotToShare none(bool cue_ball_in_hand) {
+    return {std::nullopt, cue_ball_in_hand
                               ? "Place the cue ball first: a shot link needs it on the table."
                               : "There is no shot to share yet."};
 }
@@ -21,14 +21,16 @@ ShotToShare none(game::MatchPhase phase) {
 /// Before a frame's first stroke: the match now, nominated as the stroke would be.
 ShotToShare snooker_as_aimed(const Controller& c, const physics::Stroke& aimed) {
     const game::SnookerSession& now = *c.snooker();
-    if (now.phase() != game::MatchPhase::shoot) return none(now.phase());
+    if (now.phase() != game::MatchPhase::shoot)
+        return none(now.phase() == game::MatchPhase::place_cue_ball);
     game::SnookerSession before = now;
     if (before.may_nominate()) before.nominate(c.nomination());
     return {game::SharedSnookerShot{std::move(before), aimed}, {}};
 }
 
 ShotToShare carom_as_aimed(const game::CaromSession& now, const physics::Stroke& aimed) {
-    if (now.phase() != game::MatchPhase::shoot) return none(now.phase());
+    if (now.phase() != game::MatchPhase::shoot)
+        return none(now.phase() == game::MatchPhase::place_cue_ball);
     return {game::SharedCaromShot{now, aimed}, {}};
 }
 
@@ -54,9 +56,7 @@ ShotToShare shot_to_share(const game::Session& session, const physics::Stroke& a
         return {shared(c, last.before, last.stroke), {}, true};
     }
     if (session.phase() != game::Phase::shoot)
-        return {std::nullopt, session.phase() == game::Phase::place_cue_ball
-                                  ? "Place the cue ball first: a shot link needs it on the table."
-                                  : "There is no shot to share yet."};
+        return none(session.phase() == game::Phase::place_cue_ball);
     return {shared(c, session.state(), aimed), {}};
 }
 
