@@ -510,6 +510,19 @@ def drag(g, frm, to, steps=8):
     time.sleep(0.3)
 
 
+def saved_position(work, before, speed):
+    """Save position's file: it holds the position `before` exactly, and `coolaaber-cli simulate`
+    plays a stroke of `speed` (m/s) on it. Returns the file's JSON."""
+    with open(os.path.join(work, "data", "coolaaber", "practice-position.json")) as f:
+        saved = json.load(f)
+    check({str(b["id"]): b["pos"] for b in saved["balls"]} == before, "the file holds the position exactly")
+    out = subprocess.run([os.environ["COOLAABER_CLI"], "simulate"],
+                         input=json.dumps(dict(saved, strike={"speed": speed, "heading_deg": 0.0})),
+                         capture_output=True, text=True, timeout=60)
+    check(out.returncode == 0 and "final" in json.loads(out.stdout), f"coolaaber-cli simulate reads it ({out.stderr.strip()!r})")
+    return saved
+
+
 def practice(exe, work):
     """--practice: a ball dragged to a free spot moves there, onto another ball it stays put with
     the reason; a shot plays; Try again puts back the position exactly; Save position writes what
@@ -541,14 +554,7 @@ def practice(exe, work):
         check(True, "Try again puts back the position before the shot, every number")
         g.click_widget("Save position")
         s = g.wait(lambda s: "Saved the position" in s["link_note"], 10, "the save")
-        path = os.path.join(work, "data", "coolaaber", "practice-position.json")
-        with open(path) as f:
-            saved = json.load(f)
-        check({str(b["id"]): b["pos"] for b in saved["balls"]} == before, "the file holds the position exactly")
-        saved["strike"] = {"speed": 2.0, "heading_deg": 0.0}
-        out = subprocess.run([os.environ["COOLAABER_CLI"], "simulate"], input=json.dumps(saved), capture_output=True,
-                             text=True, timeout=60)
-        check(out.returncode == 0 and "final" in json.loads(out.stdout), f"coolaaber-cli simulate reads it ({out.stderr.strip()!r})")
+        saved_position(work, before, 2.0)
         nine = s["ball_px"]["9"]
         drag(g, nine, (nine[0] + 120, nine[1] - 50))
         s = g.wait(lambda s: s["positions"] != before, 10, "the 9 moved")
@@ -694,15 +700,9 @@ def practice_tables(exe, work):
         g.wait(lambda s: s["positions"] == before, 10, "the position before the stroke")
         g.click_widget("Save position")
         s = g.wait(lambda s: "Saved the position" in s["link_note"], 10, "the save")
-        with open(os.path.join(work, "data", "coolaaber", "practice-position.json")) as f:
-            saved = json.load(f)
+        saved = saved_position(work, before, 3.0)
         check(saved["table"]["length"] == 3.569 and saved["params"]["ball_radius"] == 0.02625,
               f"the 12 ft table and the snooker balls are saved: {saved['table']['length']}, {saved['params']['ball_radius']}")
-        check({str(b["id"]): b["pos"] for b in saved["balls"]} == before, "the file holds the position exactly")
-        saved["strike"] = {"speed": 3.0, "heading_deg": 0.0}
-        out = subprocess.run([os.environ["COOLAABER_CLI"], "simulate"], input=json.dumps(saved), capture_output=True,
-                             text=True, timeout=60)
-        check(out.returncode == 0 and "final" in json.loads(out.stdout), f"coolaaber-cli simulate reads it ({out.stderr.strip()!r})")
         black = s["ball_px"]["21"]
         drag(g, black, (black[0] - 150, black[1] + 30))
         s = g.wait(lambda s: s["positions"] != before, 10, "the black moved")

@@ -26,6 +26,21 @@ physics::Stroke break_stroke() {
     return s;
 }
 
+/// Checks each object ball `simulate` left on the table (`simulate_out`, its output) against the
+/// practice's, bit for bit; returns how many it compared.
+int same_object_balls(const Practice& p, const std::string& simulate_out) {
+    int compared = 0;
+    const nlohmann::json out = nlohmann::json::parse(simulate_out);
+    for (const nlohmann::json& b : out.at("final")) {
+        const int id = b.at("id").get<int>();
+        if (b.at("pos").is_null() || id == 0) continue;
+        ++compared;
+        EXPECT_EQ(p.balls().at(id).x, b.at("pos")[0].get<double>()) << id;
+        EXPECT_EQ(p.balls().at(id).y, b.at("pos")[1].get<double>()) << id;
+    }
+    return compared;
+}
+
 std::string error_of(const std::string& text) {
     try {
         Practice::from_json(text);
@@ -128,16 +143,7 @@ TEST(Practice, SavesAsTheSimulateInputAndLoadsBackTheSameNumbers) {
     s.heading_deg = 10.0;
     s.top = 0.2;
     played.play(s);
-    int compared = 0;
-    const nlohmann::json out = nlohmann::json::parse(r.out);
-    for (const nlohmann::json& b : out.at("final")) {
-        const int id = b.at("id").get<int>();
-        if (b.at("pos").is_null() || id == 0) continue;
-        ++compared;
-        EXPECT_EQ(played.balls().at(id).x, b.at("pos")[0].get<double>()) << id;
-        EXPECT_EQ(played.balls().at(id).y, b.at("pos")[1].get<double>()) << id;
-    }
-    EXPECT_GE(compared, 10) << "the object balls left after the break";
+    EXPECT_GE(same_object_balls(played, r.out), 10) << "the object balls left after the break";
 }
 
 TEST(Practice, AFileForSimulateWithAPresetLoads) {
@@ -299,16 +305,7 @@ TEST(PracticeTables, SimulatePlaysASavedSnookerPositionToTheSameEnd) {
     const cli_test::CliResult r = cli_test::run_cli("simulate", doc.dump());
     ASSERT_EQ(r.status, 0) << r.err;
     p.play(stroke(6.0, 1.0));
-    int compared = 0;
-    const nlohmann::json out = nlohmann::json::parse(r.out);
-    for (const nlohmann::json& b : out.at("final")) {
-        const int id = b.at("id").get<int>();
-        if (b.at("pos").is_null() || id == 0) continue;
-        ++compared;
-        EXPECT_EQ(p.balls().at(id).x, b.at("pos")[0].get<double>()) << id;
-        EXPECT_EQ(p.balls().at(id).y, b.at("pos")[1].get<double>()) << id;
-    }
-    EXPECT_GE(compared, 15);
+    EXPECT_GE(same_object_balls(p, r.out), 15);
 }
 
 TEST(PracticeTables, APositionsTableAndBallsSayWhoseGameItIs) {

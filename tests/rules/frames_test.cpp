@@ -24,17 +24,6 @@ using physics::SplitMix64;
 using physics::Vec2;
 namespace sb = physics::snooker_ball;
 
-std::vector<BallState> layout(const std::map<int, Vec2>& positions) {
-    std::vector<BallState> balls;
-    for (const auto& [id, p] : positions) {
-        BallState b;
-        b.id = id;
-        b.pos = p;
-        balls.push_back(b);
-    }
-    return balls;
-}
-
 bool free_at(const std::map<int, Vec2>& pos, Vec2 p, double R) {
     for (const auto& [id, q] : pos)
         if (physics::norm(q - p) < 2 * R) return false;
@@ -121,7 +110,7 @@ void check_snooker(const SnookerState& s, const SnookerVerdict& v, const physics
             continue;
         EXPECT_EQ(v.state.positions.at(b.id), b.pos) << b.id;
     }
-    EXPECT_FALSE(physics::validate_layout(t, p, layout(v.state.positions)));
+    EXPECT_FALSE(physics::validate_layout(t, p, physics::balls_at_rest(v.state.positions)));
     for (int id : v.state.on_table) {
         EXPECT_TRUE(v.state.positions.count(id)) << id;
     }
@@ -145,7 +134,7 @@ SnookerRun play_frame(std::uint64_t seed, int cap) {
         if (s.colour_on) s.nominated = targets[rng.below(targets.size())];
         if (s.free_ball) s.nominated = *s.on_table.rbegin();
         const physics::Stroke stroke = aim(s.positions, 0, targets, rng);
-        const std::vector<BallState> balls = layout(s.positions);
+        const std::vector<BallState> balls = physics::balls_at_rest(s.positions);
         const physics::Shot shot = physics::simulate(t, p, balls, &stroke);
         EXPECT_FALSE(shot.truncated());
         const SnookerVerdict v = judge_snooker({}, table, s, shot.events());
@@ -204,7 +193,8 @@ TEST(CaromGames, RandomPlayerFinishesGames) {
             physics::Stroke stroke = aim(s.positions, cue, targets, rng);
             stroke.heading_deg += 360.0 * rng.uniform();  // any heading: banks first too
             stroke.heading_deg = std::fmod(stroke.heading_deg, 360.0);
-            const physics::Shot shot = physics::simulate(t, p, layout(s.positions), &stroke);
+            const physics::Shot shot =
+                physics::simulate(t, p, physics::balls_at_rest(s.positions), &stroke);
             ASSERT_FALSE(shot.truncated());
             const CaromVerdict v =
                 judge_three_cushion(options, spots, p.ball_radius, s, shot.events());
@@ -224,7 +214,7 @@ TEST(CaromGames, RandomPlayerFinishesGames) {
                 EXPECT_TRUE(v.point);
                 EXPECT_EQ(v.state.scores[index(s.starter)], options.target);
             }
-            EXPECT_FALSE(physics::validate_layout(t, p, layout(v.state.positions)));
+            EXPECT_FALSE(physics::validate_layout(t, p, physics::balls_at_rest(v.state.positions)));
             over = v.game_over;
             s = v.state;
         }
