@@ -215,9 +215,7 @@ void Controller::prepare_human_ball_in_hand() {
 void Controller::aim_at_target() {
     const auto cue = session_.state().positions.find(0);
     if (cue == session_.state().positions.end()) return;
-    if (practice_ && practice_->game() != physics::RackType::eight_ball &&
-        practice_->game() != physics::RackType::nine_ball)
-        return aim_at_open_ball(practice_targets());
+    if (practice_ && !practice_->on_pool_table()) return aim_at_open_ball(practice_targets());
     std::optional<physics::Vec2> best;
     double best_d = 1e9;
     for (int id : legal_targets(session_)) {

@@ -72,8 +72,7 @@ void Controller::finish_practice_shot() {
 bool Controller::hint_available() const {
     // The pool AI plays the pool tables only; snooker's and three-cushion's players need a
     // match's state (the ball on, the scores), which practice has not.
-    return !practice_ || practice_->game() == physics::RackType::eight_ball ||
-           practice_->game() == physics::RackType::nine_ball;
+    return !practice_ || practice_->on_pool_table();
 }
 
 std::vector<int> Controller::practice_targets() const {

@@ -39,6 +39,10 @@ class Practice {
     /// Whose table and balls these are: the game set out, or for a loaded position the one
     /// its table and balls say (docs/game.md, "Practice").
     physics::RackType game() const { return game_; }
+    /// An 8-ball or 9-ball table (not snooker's or three-cushion's).
+    bool on_pool_table() const {
+        return game_ == physics::RackType::eight_ball || game_ == physics::RackType::nine_ball;
+    }
     /// The pool game whose balls these are (8-ball for the other tables).
     rules::Game pool_game() const {
         return game_ == physics::RackType::nine_ball ? rules::Game::nine_ball
